@@ -1,0 +1,36 @@
+#ifndef mpm_otm_grid_system_mass_matrix_h
+#define mpm_otm_grid_system_mass_matrix_h
+
+#include <mpm_otm/grid_system/nodal_system.h>
+
+namespace MpmOtm
+{
+  /**
+   * How the mass matrix M_ij = sum_p m_p phi_i(x_p) phi_j(x_p) (journal
+   * Eq. 19) is used to turn nodal forces into accelerations and momenta into
+   * velocities: consistent, lumped (row sums, journal Eq. 17), or later
+   * partially lumped (thesis Ch. 5). Coefficients that NodalSystem excludes
+   * get zero.
+   */
+  template <int dim>
+  class MassMatrix
+  {
+  public:
+    using VectorType = typename NodalSystem<dim>::VectorType;
+
+    virtual ~MassMatrix() = default;
+
+    /**
+     * Solve M @p solution = @p right_hand_side for velocity component
+     * @p component; @p solution has the layout of the system's vectors.
+     */
+    virtual void
+    solve(const NodalSystem<dim>       &system,
+          const ParticleShapeData<dim> &shape_data,
+          const VectorType             &right_hand_side,
+          VectorType                   &solution,
+          const unsigned int            component) const = 0;
+  };
+} // namespace MpmOtm
+
+#endif

@@ -1,0 +1,100 @@
+#ifndef mpm_otm_grid_system_nodal_system_h
+#define mpm_otm_grid_system_nodal_system_h
+
+#include <deal.II/base/partitioner.h>
+
+#include <deal.II/lac/la_parallel_vector.h>
+
+#include <mpm_otm/problems/problem.h>
+#include <mpm_otm/shape_functions/particle_shape_data.h>
+
+#include <array>
+#include <memory>
+#include <vector>
+
+namespace MpmOtm
+{
+  using namespace dealii;
+
+  template <int dim>
+  class MaterialPoints;
+  template <int dim>
+  class ShapeFunctions;
+
+  /**
+   * The nodal (grid) side of a step: the vectors of nodal masses, momenta,
+   * forces, accelerations and velocities, one per component, assembled from
+   * the material points (journal Alg. 1, step 4, Eqs. 19-21; thesis
+   * Eqs. 2.27-2.30) and the lists of coefficients that are left out of the
+   * solves: those fixed by a Dirichlet condition (per component) and those
+   * whose support holds no material point (no NaN from empty cells).
+   * Vectors are distributed with ghost entries for every function that a
+   * locally owned particle touches.
+   */
+  template <int dim>
+  class NodalSystem
+  {
+  public:
+    using VectorType = LinearAlgebra::distributed::Vector<double>;
+
+    /**
+     * Build the partition and the Dirichlet lists.
+     */
+    void
+    setup(const ShapeFunctions<dim>               &shape_functions,
+          const std::vector<FixedComponents<dim>> &fixed_components);
+
+    /**
+     * The partition of the function indices over the ranks.
+     */
+    const Utilities::MPI::Partitioner &
+    partitioner() const;
+
+    /**
+     * Assemble lumped masses sum_p m_p phi_i (journal Eq. 17), momenta
+     * (Eq. 20) and forces f_i = sum_p [phi_i (m_p b + t_p) - V_p sigma_p
+     * grad phi_i] (Eq. 21 and thesis Eq. 2.28) at @p time, and the list of
+     * empty functions.
+     */
+    void
+    assemble(const MaterialPoints<dim>       &material_points,
+             const ParticleShapeData<dim>    &shape_data,
+             const Problem<dim>              &problem,
+             const double                     time);
+
+    /**
+     * Assemble only the momenta sum_p m_p phi_i v_p from the current particle
+     * velocities (thesis Eq. 2.38).
+     */
+    void
+    assemble_momentum(const MaterialPoints<dim>    &material_points,
+                      const ParticleShapeData<dim> &shape_data);
+
+    /**
+     * Locally owned functions left out of the solve for @p component:
+     * fixed by a Dirichlet condition or without material.
+     */
+    std::vector<unsigned int>
+    excluded_functions(const unsigned int component) const;
+
+    /// Lumped nodal masses.
+    VectorType lumped_mass;
+    /// Nodal momenta q_k.
+    std::array<VectorType, dim> momentum;
+    /// Nodal forces f_k.
+    std::array<VectorType, dim> force;
+    /// Nodal accelerations a_k.
+    std::array<VectorType, dim> acceleration;
+    /// Nodal velocities v_k^{s+1}.
+    std::array<VectorType, dim> velocity;
+    /// Masses of the particles in the order of the shape data.
+    std::vector<double> particle_mass;
+
+  private:
+    std::shared_ptr<Utilities::MPI::Partitioner> index_partition;
+    std::array<std::vector<unsigned int>, dim>   fixed;
+    std::vector<unsigned int>                    empty;
+  };
+} // namespace MpmOtm
+
+#endif

@@ -1,0 +1,118 @@
+#ifndef mpm_otm_io_output_writer_h
+#define mpm_otm_io_output_writer_h
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/parameter_handler.h>
+
+#include <mpm_otm/io/statistics.h>
+
+#include <fstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace MpmOtm
+{
+  using namespace dealii;
+
+  template <int dim>
+  class MaterialPoints;
+  template <int dim>
+  class NodalSystem;
+  template <int dim>
+  class ShapeFunctions;
+  template <int dim>
+  class BackgroundGrid;
+
+  /**
+   * Everything a run writes to its output directory (ARCHITECTURE.md
+   * "Output"): parameters.prm as used; particles-NNNNN.vtu/.pvtu and
+   * grid-NNNNN.vtu/.pvtu with the time series particles.pvd and grid.pvd for
+   * ParaView; statistics.csv with one row per output step; and, when asked,
+   * particles-NNNNN.csv with one row per material point sorted by id. NNNNN
+   * is the time-step number; output is written at step 0, every Interval
+   * steps and at the end time.
+   */
+  template <int dim>
+  class OutputWriter
+  {
+  public:
+    /**
+     * Declare subsection "Output".
+     */
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    /**
+     * Read subsection "Output".
+     */
+    void
+    parse_parameters(ParameterHandler &prm);
+
+    /**
+     * Create the directory, write parameters.prm and the header of
+     * statistics.csv.
+     */
+    void
+    initialize(const ParameterHandler &prm,
+               const bool              has_displacement_error,
+               const bool              has_stress_error,
+               const MPI_Comm          communicator);
+
+    /**
+     * Whether @p step is an output step (@p last: the final step).
+     */
+    bool
+    is_output_step(const unsigned int step, const bool last) const;
+
+    /**
+     * Write every file of one output step.
+     */
+    void
+    write(const unsigned int         step,
+          const double               time,
+          const MaterialPoints<dim> &material_points,
+          const BackgroundGrid<dim> &grid,
+          const ShapeFunctions<dim> &shape_functions,
+          NodalSystem<dim>          &system,
+          const Statistics<dim>     &statistics);
+
+    /**
+     * The output directory.
+     */
+    const std::string &
+    directory() const;
+
+  private:
+    void
+    write_particle_vtu(const unsigned int         step,
+                       const double               time,
+                       const MaterialPoints<dim> &material_points);
+
+    void
+    write_grid_vtu(const unsigned int         step,
+                   const double               time,
+                   const BackgroundGrid<dim> &grid,
+                   const ShapeFunctions<dim> &shape_functions,
+                   NodalSystem<dim>          &system);
+
+    void
+    write_particle_csv(const unsigned int         step,
+                       const MaterialPoints<dim> &material_points) const;
+
+    void
+    write_statistics(const unsigned int     step,
+                     const double           time,
+                     const Statistics<dim> &statistics);
+
+    std::string  output_directory;
+    unsigned int interval  = 0;
+    bool         write_csv = false;
+    bool         write_vtu = true;
+    MPI_Comm     mpi_communicator = MPI_COMM_WORLD;
+    std::vector<std::pair<double, std::string>> particle_records;
+    std::vector<std::pair<double, std::string>> grid_records;
+  };
+} // namespace MpmOtm
+
+#endif

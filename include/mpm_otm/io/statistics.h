@@ -1,0 +1,45 @@
+#ifndef mpm_otm_io_statistics_h
+#define mpm_otm_io_statistics_h
+
+namespace MpmOtm
+{
+  template <int dim>
+  class Material;
+  template <int dim>
+  class MaterialPoints;
+  template <int dim>
+  class Problem;
+
+  /**
+   * Global measures of the material points at one time: energies and, where
+   * the problem knows its exact solution, the error norms of the benchmarks:
+   * the RMS displacement error sqrt(1/M sum_p |u_p - u(X_p)|^2) (journal
+   * Eq. 102 with the square restored), the L2 displacement error
+   * sqrt(sum_p V_p |u_p - u(X_p)|^2) (thesis Eq. 4.4) and the RMS stress
+   * error sqrt(1/M sum_p |sigma_p - sigma(X_p)|^2) (conference paper).
+   */
+  template <int dim>
+  struct Statistics
+  {
+    double kinetic_energy          = 0;
+    double strain_energy           = 0;
+    double total_mass              = 0;
+    double momentum[3]             = {0, 0, 0};
+    bool   has_displacement_error  = false;
+    double displacement_rms_error  = 0;
+    double displacement_l2_error   = 0;
+    bool   has_stress_error        = false;
+    double stress_rms_error        = 0;
+
+    /**
+     * Compute all measures over the points of every rank at @p time.
+     */
+    void
+    compute(const MaterialPoints<dim> &material_points,
+            const Material<dim>       &material,
+            const Problem<dim>        &problem,
+            const double               time);
+  };
+} // namespace MpmOtm
+
+#endif

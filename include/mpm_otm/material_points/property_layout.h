@@ -1,0 +1,125 @@
+#ifndef mpm_otm_material_points_property_layout_h
+#define mpm_otm_material_points_property_layout_h
+
+#include <deal.II/base/array_view.h>
+#include <deal.II/base/symmetric_tensor.h>
+#include <deal.II/base/tensor.h>
+
+namespace MpmOtm
+{
+  using namespace dealii;
+
+  /**
+   * Where each quantity of a material point lives in the property array that
+   * Particles::ParticleHandler stores for it (one contiguous slot of doubles
+   * per particle). Position and reference position are kept by the particle
+   * handler itself; everything else is here. Tensors are stored row by row,
+   * the symmetric stress as its dim (dim + 1) / 2 independent components in
+   * the order of SymmetricTensor::unrolled_index.
+   */
+  template <int dim>
+  struct PropertyLayout
+  {
+    /// Mass m_p, constant in time.
+    static constexpr unsigned int mass = 0;
+    /// Initial volume V_p^0.
+    static constexpr unsigned int initial_volume = 1;
+    /// Current volume V_p = det(F_p) V_p^0 (journal Eq. 30).
+    static constexpr unsigned int volume = 2;
+    /// Boundary measure (length in 2D, area in 3D, 1 in 1D) this particle
+    /// represents on a traction boundary, 0 for interior particles.
+    static constexpr unsigned int traction_measure = 3;
+    /// Boundary id whose traction acts on the particle (meaningful only
+    /// when traction_measure > 0).
+    static constexpr unsigned int traction_boundary = 4;
+    /// Initial position X_p (dim components).
+    static constexpr unsigned int initial_position = 5;
+    /// Velocity v_p (dim components).
+    static constexpr unsigned int velocity = initial_position + dim;
+    /// Deformation gradient F_p (dim x dim components).
+    static constexpr unsigned int deformation_gradient = velocity + dim;
+    /// Cauchy stress sigma_p (dim (dim + 1) / 2 components).
+    static constexpr unsigned int stress = deformation_gradient + dim * dim;
+    /// Number of independent stress components.
+    static constexpr unsigned int n_stress_components = dim * (dim + 1) / 2;
+    /// Number of doubles per particle.
+    static constexpr unsigned int n_properties = stress + n_stress_components;
+
+    /**
+     * The vector of dim components that starts at @p first.
+     */
+    template <typename Number>
+    static Tensor<1, dim>
+    get_vector(const ArrayView<Number> &properties, const unsigned int first)
+    {
+      Tensor<1, dim> result;
+      for (unsigned int d = 0; d < dim; ++d)
+        result[d] = properties[first + d];
+      return result;
+    }
+
+    /**
+     * Store @p value in the dim components that start at @p first.
+     */
+    static void
+    set_vector(const ArrayView<double> &properties,
+               const unsigned int       first,
+               const Tensor<1, dim>    &value)
+    {
+      for (unsigned int d = 0; d < dim; ++d)
+        properties[first + d] = value[d];
+    }
+
+    /**
+     * The deformation gradient.
+     */
+    template <typename Number>
+    static Tensor<2, dim>
+    get_deformation_gradient(const ArrayView<Number> &properties)
+    {
+      Tensor<2, dim> F;
+      for (unsigned int i = 0; i < dim; ++i)
+        for (unsigned int j = 0; j < dim; ++j)
+          F[i][j] = properties[deformation_gradient + i * dim + j];
+      return F;
+    }
+
+    /**
+     * Store the deformation gradient.
+     */
+    static void
+    set_deformation_gradient(const ArrayView<double> &properties,
+                             const Tensor<2, dim>    &F)
+    {
+      for (unsigned int i = 0; i < dim; ++i)
+        for (unsigned int j = 0; j < dim; ++j)
+          properties[deformation_gradient + i * dim + j] = F[i][j];
+    }
+
+    /**
+     * The Cauchy stress.
+     */
+    template <typename Number>
+    static SymmetricTensor<2, dim>
+    get_stress(const ArrayView<Number> &properties)
+    {
+      SymmetricTensor<2, dim> sigma;
+      for (unsigned int k = 0; k < n_stress_components; ++k)
+        sigma.access_raw_entry(k) = properties[stress + k];
+      return sigma;
+    }
+
+    /**
+     * Store the Cauchy stress.
+     */
+    static void
+    set_stress(const ArrayView<double>       &properties,
+               const SymmetricTensor<2, dim> &sigma)
+    {
+      for (unsigned int k = 0; k < n_stress_components; ++k)
+        properties[stress + k] = sigma.access_raw_entry(k);
+    }
+  };
+} // namespace MpmOtm
+
+#endif

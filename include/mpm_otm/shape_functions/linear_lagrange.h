@@ -1,0 +1,59 @@
+#ifndef mpm_otm_shape_functions_linear_lagrange_h
+#define mpm_otm_shape_functions_linear_lagrange_h
+
+#include <deal.II/fe/fe.h>
+
+#include <mpm_otm/shape_functions/shape_functions.h>
+
+#include <memory>
+
+namespace MpmOtm
+{
+  /**
+   * Piecewise-linear Lagrange functions (journal Sect. 6.1): FE_Q(1) on
+   * quadrilaterals/hexahedra, FE_SimplexP(1) on triangles/tetrahedra. Values
+   * and gradients are computed in closed form from the particle's reference
+   * coordinates (tensor products of 1 - xi and xi, or barycentric
+   * coordinates) and the isoparametric Jacobian of its cell, so they are right
+   * on fixed and on moving grids.
+   */
+  template <int dim>
+  class LinearLagrange : public ShapeFunctions<dim>
+  {
+  public:
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    void
+    initialize(const BackgroundGrid<dim> &grid) override;
+
+    const DoFHandler<dim> &
+    dof_handler() const override;
+
+    void
+    evaluate(const MaterialPoints<dim>          &material_points,
+             const Utilities::MPI::Partitioner &partitioner,
+             ParticleShapeData<dim>            &data) const override;
+
+    IndexSet
+    boundary_functions(const types::boundary_id boundary_id) const override;
+
+    /**
+     * Values and reference-cell gradients of the 2^dim (hypercube) or dim + 1
+     * (simplex) functions at reference point @p xi, in the order of the
+     * cell's vertices.
+     */
+    static void
+    reference_values(const bool                  simplex,
+                     const Point<dim>           &xi,
+                     double                     *values,
+                     Tensor<1, dim>             *reference_gradients);
+
+  private:
+    bool                                    simplex = false;
+    std::unique_ptr<FiniteElement<dim>>     fe;
+    DoFHandler<dim>                         dofs;
+  };
+} // namespace MpmOtm
+
+#endif

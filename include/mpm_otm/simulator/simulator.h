@@ -1,0 +1,131 @@
+#ifndef mpm_otm_simulator_simulator_h
+#define mpm_otm_simulator_simulator_h
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/parameter_handler.h>
+
+#include <mpm_otm/io/statistics.h>
+
+#include <memory>
+#include <ostream>
+#include <string>
+
+namespace MpmOtm
+{
+  using namespace dealii;
+
+  template <int dim>
+  class BackgroundGrid;
+  template <int dim>
+  class MaterialPoints;
+  template <int dim>
+  class ShapeFunctions;
+  template <int dim>
+  class NodalSystem;
+  template <int dim>
+  class MassMatrix;
+  template <int dim>
+  class NodalUpdate;
+  template <int dim>
+  class Material;
+  template <int dim>
+  class Problem;
+  template <int dim>
+  class OutputWriter;
+
+  /**
+   * Read the entry "Dimension" of a parameter file (1 when @p filename is
+   * empty: the default benchmark).
+   */
+  unsigned int
+  read_dimension(const std::string &filename);
+
+  /**
+   * The application: declares and reads every parameter, builds the grid,
+   * material points, shape functions, strategies and output from them, and
+   * runs the time loop, reporting progress on rank 0 and timings at the end.
+   */
+  template <int dim>
+  class Simulator
+  {
+  public:
+    /**
+     * @p log receives the progress lines and the timing summary (rank 0).
+     */
+    Simulator(const MPI_Comm communicator, std::ostream &log);
+
+    ~Simulator();
+
+    /**
+     * Declare every parameter of the application, including those of every
+     * registered plugin.
+     */
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    /**
+     * Read and check all parameters; stops with a message naming the entry
+     * on bad input.
+     */
+    void
+    parse_parameters(ParameterHandler &prm);
+
+    /**
+     * Build everything and write the initial output; checks the time step
+     * against the CFL bound (thesis Eq. 2.48).
+     */
+    void
+    setup(const ParameterHandler &prm);
+
+    /**
+     * Run all time steps to the end time; returns the statistics at the end.
+     */
+    Statistics<dim>
+    run();
+
+    /**
+     * The material points (for tests and post-processing).
+     */
+    const MaterialPoints<dim> &
+    material_points() const;
+
+    /**
+     * The nodal system of the last step.
+     */
+    const NodalSystem<dim> &
+    nodal_system() const;
+
+    /**
+     * The problem.
+     */
+    const Problem<dim> &
+    problem() const;
+
+    /**
+     * Current time.
+     */
+    double
+    time() const;
+
+  private:
+    MPI_Comm           communicator;
+    ConditionalOStream pcout;
+
+    double end_time  = 0;
+    double time_step = 0;
+    double current_time = 0;
+
+    std::unique_ptr<BackgroundGrid<dim>> grid;
+    std::unique_ptr<MaterialPoints<dim>> points;
+    std::unique_ptr<ShapeFunctions<dim>> shape_functions;
+    std::unique_ptr<NodalSystem<dim>>    system;
+    std::unique_ptr<MassMatrix<dim>>     mass_matrix;
+    std::unique_ptr<NodalUpdate<dim>>    nodal_update;
+    std::unique_ptr<Material<dim>>       material;
+    std::unique_ptr<Problem<dim>>        problem_description;
+    std::unique_ptr<OutputWriter<dim>>   output;
+  };
+} // namespace MpmOtm
+
+#endif

@@ -1,0 +1,48 @@
+#include <mpm_otm/algorithms/modified_update_stress_last.h>
+#include <mpm_otm/base/plugins.h>
+
+namespace MpmOtm
+{
+  template <int dim>
+  void
+  ModifiedUpdateStressLast<dim>::declare_parameters(ParameterHandler &)
+  {}
+
+
+
+  template <int dim>
+  void
+  ModifiedUpdateStressLast<dim>::compute_nodal_velocities(
+    NodalSystem<dim>             &system,
+    const MassMatrix<dim>        &mass_matrix,
+    const MaterialPoints<dim>    &material_points,
+    const ParticleShapeData<dim> &shape_data,
+    const double) const
+  {
+    system.assemble_momentum(material_points, shape_data);
+    for (unsigned int c = 0; c < dim; ++c)
+      mass_matrix.solve(
+        system, shape_data, system.momentum[c], system.velocity[c], c);
+  }
+
+
+
+  template class ModifiedUpdateStressLast<1>;
+  template class ModifiedUpdateStressLast<2>;
+  template class ModifiedUpdateStressLast<3>;
+} // namespace MpmOtm
+
+#define MPM_OTM_MUSL_DESCRIPTION                                            \
+  "modified update stress last, thesis Sect. 2.4.3"
+MPM_OTM_REGISTER_PLUGIN(MpmOtm::NodalUpdate<1>,
+                        MpmOtm::ModifiedUpdateStressLast<1>,
+                        "MUSL",
+                        MPM_OTM_MUSL_DESCRIPTION)
+MPM_OTM_REGISTER_PLUGIN(MpmOtm::NodalUpdate<2>,
+                        MpmOtm::ModifiedUpdateStressLast<2>,
+                        "MUSL",
+                        MPM_OTM_MUSL_DESCRIPTION)
+MPM_OTM_REGISTER_PLUGIN(MpmOtm::NodalUpdate<3>,
+                        MpmOtm::ModifiedUpdateStressLast<3>,
+                        "MUSL",
+                        MPM_OTM_MUSL_DESCRIPTION)

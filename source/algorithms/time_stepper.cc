@@ -1,0 +1,190 @@
+#include <mpm_otm/algorithms/time_stepper.h>
+#include <mpm_otm/material_points/material_points.h>
+#include <mpm_otm/materials/material.h>
+#include <mpm_otm/shape_functions/shape_functions.h>
+
+#include <cmath>
+#include <limits>
+
+namespace MpmOtm
+{
+  template <int dim>
+  TimeStepper<dim>::TimeStepper(MaterialPoints<dim>       &material_points,
+                                const ShapeFunctions<dim> &shape_functions,
+                                NodalSystem<dim>          &system,
+                                const MassMatrix<dim>     &mass_matrix,
+                                const NodalUpdate<dim>    &nodal_update,
+                                const Material<dim>       &material,
+                                const Problem<dim>        &problem,
+                                TimerOutput               &timer)
+    : material_points(material_points)
+    , shape_functions(shape_functions)
+    , system(system)
+    , mass_matrix(mass_matrix)
+    , nodal_update(nodal_update)
+    , material(material)
+    , problem(problem)
+    , timer(timer)
+  {}
+
+
+
+  template <int dim>
+  void
+  TimeStepper<dim>::advance(const double time, const double dt)
+  {
+    {
+      TimerOutput::Scope scope(timer, "shape functions");
+      shape_functions.evaluate(material_points, system.partitioner(), data);
+    }
+    {
+      TimerOutput::Scope scope(timer, "particle to grid");
+      system.assemble(material_points, data, problem, time);
+    }
+    {
+      TimerOutput::Scope scope(timer, "solve");
+      for (unsigned int c = 0; c < dim; ++c)
+        {
+          mass_matrix.solve(
+            system, data, system.force[c], system.acceleration[c], c);
+          system.acceleration[c].update_ghost_values();
+        }
+    }
+    {
+      TimerOutput::Scope scope(timer, "grid to particle");
+      advance_particle_velocities(dt);
+    }
+    {
+      TimerOutput::Scope scope(timer, "solve");
+      nodal_update.compute_nodal_velocities(
+        system, mass_matrix, material_points, data, dt);
+      for (unsigned int c = 0; c < dim; ++c)
+        system.velocity[c].update_ghost_values();
+    }
+    {
+      TimerOutput::Scope scope(timer, "grid to particle");
+      update_particles(dt);
+    }
+    {
+      TimerOutput::Scope scope(timer, "locate particles");
+      material_points.locate();
+    }
+  }
+
+
+
+  template <int dim>
+  const ParticleShapeData<dim> &
+  TimeStepper<dim>::shape_data() const
+  {
+    return data;
+  }
+
+
+
+  template <int dim>
+  void
+  TimeStepper<dim>::advance_particle_velocities(const double dt)
+  {
+    using Layout = PropertyLayout<dim>;
+    const double *a[dim];
+    for (unsigned int c = 0; c < dim; ++c)
+      a[c] = system.acceleration[c].get_values();
+    unsigned int k = 0;
+    for (auto &particle : material_points.particle_handler())
+      {
+        const auto properties = particle.get_properties();
+        for (unsigned int e = data.offsets[k]; e < data.offsets[k + 1]; ++e)
+          for (unsigned int c = 0; c < dim; ++c)
+            properties[Layout::velocity + c] +=
+              dt * data.values[e] * a[c][data.indices[e]];
+        ++k;
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  TimeStepper<dim>::update_particles(const double dt)
+  {
+    using Layout = PropertyLayout<dim>;
+    const double *v[dim];
+    for (unsigned int c = 0; c < dim; ++c)
+      v[c] = system.velocity[c].get_values();
+
+    types::particle_index bad_point = numbers::invalid_unsigned_int;
+    Point<dim>            bad_location;
+    unsigned int          k = 0;
+    for (auto &particle : material_points.particle_handler())
+      {
+        Tensor<1, dim> displacement;
+        Tensor<2, dim> velocity_gradient;
+        for (unsigned int e = data.offsets[k]; e < data.offsets[k + 1]; ++e)
+          {
+            const unsigned int    i    = data.indices[e];
+            const Tensor<1, dim> &grad = data.gradients[e];
+            for (unsigned int c = 0; c < dim; ++c)
+              {
+                displacement[c] += data.values[e] * v[c][i];
+                velocity_gradient[c] += v[c][i] * grad;
+              }
+          }
+        displacement *= dt;
+
+        const auto     properties = particle.get_properties();
+        Tensor<2, dim> F = Layout::get_deformation_gradient(properties);
+        F = (unit_symmetric_tensor<dim>() + dt * velocity_gradient) * F;
+        Layout::set_deformation_gradient(properties, F);
+        properties[Layout::volume] =
+          determinant(F) * properties[Layout::initial_volume];
+
+        SymmetricTensor<2, dim> sigma = Layout::get_stress(properties);
+        material.update_stress(F, velocity_gradient, dt, sigma);
+        Layout::set_stress(properties, sigma);
+
+        const Point<dim> location = particle.get_location() + displacement;
+        particle.set_location(location);
+
+        const double check = sigma.norm() +
+                             Layout::get_vector(properties, Layout::velocity)
+                               .norm() +
+                             properties[Layout::volume];
+        if (!std::isfinite(check) && bad_point == numbers::invalid_unsigned_int)
+          {
+            bad_point    = particle.get_id();
+            bad_location = location;
+          }
+        ++k;
+      }
+
+    const MPI_Comm communicator =
+      system.lumped_mass.get_mpi_communicator();
+    if (Utilities::MPI::max(bad_point == numbers::invalid_unsigned_int ? 0 : 1,
+                            communicator) > 0)
+      {
+        std::string text;
+        if (bad_point != numbers::invalid_unsigned_int)
+          {
+            std::ostringstream message;
+            message << "material point " << bad_point << " at ("
+                    << bad_location << ") has a non-finite velocity, stress "
+                    << "or volume. ";
+            text = message.str();
+          }
+        std::string all;
+        for (const auto &part : Utilities::MPI::all_gather(communicator, text))
+          all += part;
+        AssertThrow(false,
+                    ExcMessage("The computation became unstable: " + all +
+                               "Reduce Time/Time step or use a lumped mass "
+                               "matrix."));
+      }
+  }
+
+
+
+  template class TimeStepper<1>;
+  template class TimeStepper<2>;
+  template class TimeStepper<3>;
+} // namespace MpmOtm

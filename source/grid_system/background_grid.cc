@@ -1,0 +1,300 @@
+#include <deal.II/base/utilities.h>
+
+#include <deal.II/distributed/tria.h>
+
+#include <deal.II/fe/fe_simplex_p.h>
+#include <deal.II/fe/mapping_cartesian.h>
+#include <deal.II/fe/mapping_fe.h>
+
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/grid_tools.h>
+
+#include <mpm_otm/grid_system/background_grid.h>
+
+#include <cmath>
+#include <limits>
+
+namespace MpmOtm
+{
+  namespace
+  {
+    /**
+     * Read a comma-separated list with one value per direction; a single
+     * value is used for every direction.
+     */
+    template <typename T>
+    std::vector<T>
+    per_direction(const std::vector<T> &values,
+                  const unsigned int    dim,
+                  const std::string    &entry)
+    {
+      AssertThrow(values.size() == 1 || values.size() == dim,
+                  ExcMessage("Mesh/" + entry + " needs one value or " +
+                             std::to_string(dim) +
+                             " comma-separated values (one per direction), "
+                             "but has " +
+                             std::to_string(values.size()) + "."));
+      if (values.size() == dim)
+        return values;
+      return std::vector<T>(dim, values[0]);
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  void
+  BackgroundGrid<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Mesh");
+    {
+      prm.declare_entry("Cell type",
+                        "hypercube",
+                        Patterns::Selection("hypercube|simplex"),
+                        "hypercube: one quadrilateral/hexahedron per block; "
+                        "simplex: four triangles around the block centre in "
+                        "2D (thesis Fig. 4.2), tetrahedra in 3D.");
+      prm.declare_entry("Lower corner",
+                        "0",
+                        Patterns::List(Patterns::Double()),
+                        "Lower corner of the background box, one value per "
+                        "direction (one value: the same in every direction).");
+      prm.declare_entry("Upper corner",
+                        "1",
+                        Patterns::List(Patterns::Double()),
+                        "Upper corner of the background box.");
+      prm.declare_entry("Subdivisions",
+                        "31",
+                        Patterns::List(Patterns::Integer(1)),
+                        "Number of blocks per direction (nodes per direction "
+                        "minus one for linear shape functions).");
+    }
+    prm.leave_subsection();
+  }
+
+
+
+  template <int dim>
+  void
+  BackgroundGrid<dim>::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Mesh");
+    simplex = (prm.get("Cell type") == "simplex");
+    const auto lower = per_direction(
+      Utilities::string_to_double(
+        Utilities::split_string_list(prm.get("Lower corner"))),
+      dim,
+      "Lower corner");
+    const auto upper = per_direction(
+      Utilities::string_to_double(
+        Utilities::split_string_list(prm.get("Upper corner"))),
+      dim,
+      "Upper corner");
+    const auto n = per_direction(Utilities::string_to_int(
+                                   Utilities::split_string_list(
+                                     prm.get("Subdivisions"))),
+                                 dim,
+                                 "Subdivisions");
+    prm.leave_subsection();
+
+    Point<dim> p1, p2;
+    blocks.resize(dim);
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        AssertThrow(upper[d] > lower[d],
+                    ExcMessage("Mesh/Upper corner must be larger than "
+                               "Mesh/Lower corner in every direction."));
+        p1[d]     = lower[d];
+        p2[d]     = upper[d];
+        blocks[d] = n[d];
+      }
+    bounding_box = BoundingBox<dim>(std::make_pair(p1, p2));
+    AssertThrow(!(simplex && dim == 1),
+                ExcMessage("Mesh/Cell type = simplex needs Dimension 2 or "
+                           "3; in 1D use hypercube (intervals)."));
+  }
+
+
+
+  template <int dim>
+  void
+  BackgroundGrid<dim>::create(const MPI_Comm communicator)
+  {
+    const bool distributed = (dim > 1 && !simplex);
+    if (distributed)
+      tria = std::make_unique<parallel::distributed::Triangulation<dim>>(
+        communicator);
+    else
+      {
+        AssertThrow(Utilities::MPI::n_mpi_processes(communicator) == 1,
+                    ExcMessage("1D and simplex grids run on one MPI rank; "
+                               "run without mpirun or use Mesh/Cell type = "
+                               "hypercube in 2D or 3D."));
+        tria = std::make_unique<Triangulation<dim>>();
+      }
+
+    if (!simplex)
+      {
+        GridGenerator::subdivided_hyper_rectangle(*tria,
+                                                  blocks,
+                                                  bounding_box.get_boundary_points().first,
+                                                  bounding_box.get_boundary_points().second);
+        map = std::make_unique<MappingCartesian<dim>>();
+      }
+    else
+      {
+        if constexpr (dim == 2)
+          create_simplex_blocks_2d();
+        else
+          GridGenerator::subdivided_hyper_rectangle_with_simplices(
+            *tria,
+            blocks,
+            bounding_box.get_boundary_points().first,
+            bounding_box.get_boundary_points().second);
+        map = std::make_unique<MappingFE<dim>>(FE_SimplexP<dim>(1));
+      }
+    set_boundary_ids();
+  }
+
+
+
+  template <int dim>
+  void
+  BackgroundGrid<dim>::create_simplex_blocks_2d()
+  {
+    if constexpr (dim == 2)
+      {
+        const Point<2> lower = bounding_box.get_boundary_points().first;
+        const Point<2> upper = bounding_box.get_boundary_points().second;
+        const unsigned int nx = blocks[0], ny = blocks[1];
+        const double       hx = (upper[0] - lower[0]) / nx;
+        const double       hy = (upper[1] - lower[1]) / ny;
+
+        std::vector<Point<2>> vertices;
+        for (unsigned int j = 0; j <= ny; ++j)
+          for (unsigned int i = 0; i <= nx; ++i)
+            vertices.emplace_back(lower[0] + i * hx, lower[1] + j * hy);
+        const unsigned int first_centre = vertices.size();
+        for (unsigned int j = 0; j < ny; ++j)
+          for (unsigned int i = 0; i < nx; ++i)
+            vertices.emplace_back(lower[0] + (i + 0.5) * hx,
+                                  lower[1] + (j + 0.5) * hy);
+
+        std::vector<CellData<2>> cells;
+        for (unsigned int j = 0; j < ny; ++j)
+          for (unsigned int i = 0; i < nx; ++i)
+            {
+              const unsigned int corner[4] = {j * (nx + 1) + i,
+                                              j * (nx + 1) + i + 1,
+                                              (j + 1) * (nx + 1) + i + 1,
+                                              (j + 1) * (nx + 1) + i};
+              const unsigned int centre    = first_centre + j * nx + i;
+              // Four counter-clockwise triangles: bottom, right, top, left.
+              for (unsigned int k = 0; k < 4; ++k)
+                {
+                  CellData<2> cell(3);
+                  cell.vertices = {corner[k], corner[(k + 1) % 4], centre};
+                  cells.push_back(cell);
+                }
+            }
+        tria->create_triangulation(vertices, cells, SubCellData());
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  BackgroundGrid<dim>::set_boundary_ids()
+  {
+    const Point<dim> lower = bounding_box.get_boundary_points().first;
+    const Point<dim> upper = bounding_box.get_boundary_points().second;
+    for (const auto &cell : tria->active_cell_iterators())
+      for (const unsigned int f : cell->face_indices())
+        if (cell->face(f)->at_boundary())
+          {
+            const Point<dim> centre = cell->face(f)->center();
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                const double tolerance = 1e-10 * (upper[d] - lower[d]);
+                if (std::abs(centre[d] - lower[d]) < tolerance)
+                  cell->face(f)->set_boundary_id(2 * d);
+                else if (std::abs(centre[d] - upper[d]) < tolerance)
+                  cell->face(f)->set_boundary_id(2 * d + 1);
+              }
+          }
+  }
+
+
+
+  template <int dim>
+  Triangulation<dim> &
+  BackgroundGrid<dim>::triangulation()
+  {
+    return *tria;
+  }
+
+
+
+  template <int dim>
+  const Triangulation<dim> &
+  BackgroundGrid<dim>::triangulation() const
+  {
+    return *tria;
+  }
+
+
+
+  template <int dim>
+  const Mapping<dim> &
+  BackgroundGrid<dim>::mapping() const
+  {
+    return *map;
+  }
+
+
+
+  template <int dim>
+  bool
+  BackgroundGrid<dim>::is_simplex() const
+  {
+    return simplex;
+  }
+
+
+
+  template <int dim>
+  const BoundingBox<dim> &
+  BackgroundGrid<dim>::box() const
+  {
+    return bounding_box;
+  }
+
+
+
+  template <int dim>
+  const std::vector<unsigned int> &
+  BackgroundGrid<dim>::subdivisions() const
+  {
+    return blocks;
+  }
+
+
+
+  template <int dim>
+  double
+  BackgroundGrid<dim>::minimal_cell_size() const
+  {
+    double h = std::numeric_limits<double>::max();
+    for (const auto &cell : tria->active_cell_iterators())
+      if (cell->is_locally_owned())
+        h = std::min(h, cell->minimum_vertex_distance());
+    return Utilities::MPI::min(h, tria->get_communicator());
+  }
+
+
+
+  template class BackgroundGrid<1>;
+  template class BackgroundGrid<2>;
+  template class BackgroundGrid<3>;
+} // namespace MpmOtm

@@ -1,0 +1,200 @@
+#include <deal.II/dofs/dof_tools.h>
+
+#include <mpm_otm/grid_system/nodal_system.h>
+#include <mpm_otm/material_points/material_points.h>
+#include <mpm_otm/shape_functions/shape_functions.h>
+
+#include <algorithm>
+
+namespace MpmOtm
+{
+  template <int dim>
+  void
+  NodalSystem<dim>::setup(
+    const ShapeFunctions<dim>               &shape_functions,
+    const std::vector<FixedComponents<dim>> &fixed_components)
+  {
+    const DoFHandler<dim> &dofs = shape_functions.dof_handler();
+    IndexSet               relevant;
+    DoFTools::extract_locally_relevant_dofs(dofs, relevant);
+    index_partition = std::make_shared<Utilities::MPI::Partitioner>(
+      dofs.locally_owned_dofs(),
+      relevant,
+      dofs.get_triangulation().get_communicator());
+
+    lumped_mass.reinit(index_partition);
+    for (unsigned int c = 0; c < dim; ++c)
+      {
+        momentum[c].reinit(index_partition);
+        force[c].reinit(index_partition);
+        acceleration[c].reinit(index_partition);
+        velocity[c].reinit(index_partition);
+        fixed[c].clear();
+      }
+
+    for (const auto &condition : fixed_components)
+      {
+        const IndexSet on_boundary =
+          shape_functions.boundary_functions(condition.boundary_id);
+        for (const auto global : on_boundary)
+          if (index_partition->in_local_range(global))
+            for (unsigned int c = 0; c < dim; ++c)
+              if (condition.fixed[c])
+                fixed[c].push_back(index_partition->global_to_local(global));
+      }
+    for (auto &list : fixed)
+      {
+        std::sort(list.begin(), list.end());
+        list.erase(std::unique(list.begin(), list.end()), list.end());
+      }
+  }
+
+
+
+  template <int dim>
+  const Utilities::MPI::Partitioner &
+  NodalSystem<dim>::partitioner() const
+  {
+    return *index_partition;
+  }
+
+
+
+  template <int dim>
+  void
+  NodalSystem<dim>::assemble(const MaterialPoints<dim>    &material_points,
+                             const ParticleShapeData<dim> &shape_data,
+                             const Problem<dim>           &problem,
+                             const double                  time)
+  {
+    using Layout = PropertyLayout<dim>;
+    lumped_mass  = 0.;
+    for (unsigned int c = 0; c < dim; ++c)
+      {
+        momentum[c] = 0.;
+        force[c]    = 0.;
+      }
+    particle_mass.resize(shape_data.n_particles());
+
+    std::vector<Tensor<1, dim>> traction(2 * dim);
+    for (const auto id : problem.traction_boundaries())
+      traction[id] = problem.traction(id, time);
+    const bool has_body_force = problem.has_body_force();
+
+    double *const mass = lumped_mass.get_values();
+    double       *q[dim];
+    double       *f[dim];
+    for (unsigned int c = 0; c < dim; ++c)
+      {
+        q[c] = momentum[c].get_values();
+        f[c] = force[c].get_values();
+      }
+
+    unsigned int k = 0;
+    for (const auto &particle : material_points.particle_handler())
+      {
+        const auto           properties = particle.get_properties();
+        const double         m          = properties[Layout::mass];
+        const double         volume     = properties[Layout::volume];
+        const Tensor<1, dim> v =
+          Layout::get_vector(properties, Layout::velocity);
+        const SymmetricTensor<2, dim> sigma = Layout::get_stress(properties);
+
+        Tensor<1, dim> external;
+        if (has_body_force)
+          external = m * problem.body_force(
+                           Point<dim>(Layout::get_vector(
+                             properties, Layout::initial_position)),
+                           time);
+        if (properties[Layout::traction_measure] > 0.)
+          external +=
+            properties[Layout::traction_measure] *
+            traction[static_cast<unsigned int>(
+              properties[Layout::traction_boundary])];
+
+        for (unsigned int e = shape_data.offsets[k];
+             e < shape_data.offsets[k + 1];
+             ++e)
+          {
+            const unsigned int    i     = shape_data.indices[e];
+            const double          phi   = shape_data.values[e];
+            const Tensor<1, dim> &grad  = shape_data.gradients[e];
+            const Tensor<1, dim>  sigma_grad = sigma * grad;
+            mass[i] += phi * m;
+            for (unsigned int c = 0; c < dim; ++c)
+              {
+                q[c][i] += phi * m * v[c];
+                f[c][i] += phi * external[c] - volume * sigma_grad[c];
+              }
+          }
+        particle_mass[k] = m;
+        ++k;
+      }
+
+    lumped_mass.compress(VectorOperation::add);
+    for (unsigned int c = 0; c < dim; ++c)
+      {
+        momentum[c].compress(VectorOperation::add);
+        force[c].compress(VectorOperation::add);
+      }
+
+    empty.clear();
+    for (unsigned int i = 0; i < lumped_mass.locally_owned_size(); ++i)
+      if (!(lumped_mass.local_element(i) > 0.))
+        empty.push_back(i);
+  }
+
+
+
+  template <int dim>
+  void
+  NodalSystem<dim>::assemble_momentum(
+    const MaterialPoints<dim>    &material_points,
+    const ParticleShapeData<dim> &shape_data)
+  {
+    using Layout = PropertyLayout<dim>;
+    double *q[dim];
+    for (unsigned int c = 0; c < dim; ++c)
+      {
+        momentum[c] = 0.;
+        q[c]        = momentum[c].get_values();
+      }
+    unsigned int k = 0;
+    for (const auto &particle : material_points.particle_handler())
+      {
+        const auto           properties = particle.get_properties();
+        const double         m          = properties[Layout::mass];
+        const Tensor<1, dim> v =
+          Layout::get_vector(properties, Layout::velocity);
+        for (unsigned int e = shape_data.offsets[k];
+             e < shape_data.offsets[k + 1];
+             ++e)
+          for (unsigned int c = 0; c < dim; ++c)
+            q[c][shape_data.indices[e]] += shape_data.values[e] * m * v[c];
+        ++k;
+      }
+    for (unsigned int c = 0; c < dim; ++c)
+      momentum[c].compress(VectorOperation::add);
+  }
+
+
+
+  template <int dim>
+  std::vector<unsigned int>
+  NodalSystem<dim>::excluded_functions(const unsigned int component) const
+  {
+    std::vector<unsigned int> result;
+    std::set_union(fixed[component].begin(),
+                   fixed[component].end(),
+                   empty.begin(),
+                   empty.end(),
+                   std::back_inserter(result));
+    return result;
+  }
+
+
+
+  template class NodalSystem<1>;
+  template class NodalSystem<2>;
+  template class NodalSystem<3>;
+} // namespace MpmOtm

@@ -1,0 +1,379 @@
+#include <deal.II/base/data_out_base.h>
+#include <deal.II/base/utilities.h>
+
+#include <deal.II/numerics/data_out.h>
+
+#include <mpm_otm/grid_system/background_grid.h>
+#include <mpm_otm/grid_system/nodal_system.h>
+#include <mpm_otm/io/output_writer.h>
+#include <mpm_otm/material_points/material_points.h>
+#include <mpm_otm/shape_functions/shape_functions.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <iomanip>
+#include <sstream>
+
+namespace MpmOtm
+{
+  namespace
+  {
+    /**
+     * The material points of this rank as zero-dimensional patches with
+     * displacement, velocity, stress, volume, mass and id.
+     */
+    template <int dim>
+    class ParticlePatches : public DataOutInterface<0, dim>
+    {
+    public:
+      explicit ParticlePatches(const MaterialPoints<dim> &material_points)
+      {
+        using Layout = PropertyLayout<dim>;
+        names.clear();
+        for (unsigned int d = 0; d < dim; ++d)
+          names.push_back("displacement");
+        for (unsigned int d = 0; d < dim; ++d)
+          names.push_back("velocity");
+        for (unsigned int k = 0; k < Layout::n_stress_components; ++k)
+          {
+            const auto ij =
+              SymmetricTensor<2, dim>::unrolled_to_component_indices(k);
+            names.push_back(std::string("stress_") + "xyz"[ij[0]] +
+                            "xyz"[ij[1]]);
+          }
+        names.insert(names.end(), {"volume", "mass", "id"});
+
+        for (const auto &particle : material_points.particle_handler())
+          {
+            const auto properties = particle.get_properties();
+            DataOutBase::Patch<0, dim> patch;
+            patch.vertices[0] = particle.get_location();
+            patch.data.reinit(names.size(), 1);
+            unsigned int    n = 0;
+            const Point<dim> X(
+              Layout::get_vector(properties, Layout::initial_position));
+            for (unsigned int d = 0; d < dim; ++d)
+              patch.data(n++, 0) = particle.get_location()[d] - X[d];
+            for (unsigned int d = 0; d < dim; ++d)
+              patch.data(n++, 0) = properties[Layout::velocity + d];
+            for (unsigned int k = 0; k < Layout::n_stress_components; ++k)
+              patch.data(n++, 0) = properties[Layout::stress + k];
+            patch.data(n++, 0) = properties[Layout::volume];
+            patch.data(n++, 0) = properties[Layout::mass];
+            patch.data(n++, 0) = particle.get_id();
+            patches.push_back(patch);
+          }
+      }
+
+    private:
+      const std::vector<DataOutBase::Patch<0, dim>> &
+      get_patches() const override
+      {
+        return patches;
+      }
+
+      std::vector<std::string>
+      get_dataset_names() const override
+      {
+        return names;
+      }
+
+      std::vector<
+        std::tuple<unsigned int,
+                   unsigned int,
+                   std::string,
+                   DataComponentInterpretation::DataComponentInterpretation>>
+      get_nonscalar_data_ranges() const override
+      {
+        if (dim == 1)
+          return {};
+        return {{0,
+                 dim - 1,
+                 "displacement",
+                 DataComponentInterpretation::component_is_part_of_vector},
+                {dim,
+                 2 * dim - 1,
+                 "velocity",
+                 DataComponentInterpretation::component_is_part_of_vector}};
+      }
+
+      std::vector<std::string>                names;
+      std::vector<DataOutBase::Patch<0, dim>> patches;
+    };
+
+    std::string
+    step_string(const unsigned int step)
+    {
+      return Utilities::int_to_string(step, 5);
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  void
+  OutputWriter<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Output");
+    prm.declare_entry("Directory",
+                      "output",
+                      Patterns::DirectoryName(),
+                      "Directory for all output (created if missing).");
+    prm.declare_entry("Interval",
+                      "0",
+                      Patterns::Integer(0),
+                      "Write output every this many time steps (0: only at "
+                      "the start and at the end time).");
+    prm.declare_entry("Write particle CSV",
+                      "false",
+                      Patterns::Bool(),
+                      "Also write particles-NNNNN.csv with one row per "
+                      "material point.");
+    prm.declare_entry("Write VTU",
+                      "true",
+                      Patterns::Bool(),
+                      "Write particle and grid VTU files with PVD time "
+                      "series for ParaView.");
+    prm.leave_subsection();
+  }
+
+
+
+  template <int dim>
+  void
+  OutputWriter<dim>::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Output");
+    output_directory = prm.get("Directory");
+    interval         = prm.get_integer("Interval");
+    write_csv        = prm.get_bool("Write particle CSV");
+    write_vtu        = prm.get_bool("Write VTU");
+    prm.leave_subsection();
+    AssertThrow(!output_directory.empty(),
+                ExcMessage("Output/Directory must not be empty."));
+  }
+
+
+
+  template <int dim>
+  void
+  OutputWriter<dim>::initialize(const ParameterHandler &prm,
+                                const bool     has_displacement_error,
+                                const bool     has_stress_error,
+                                const MPI_Comm communicator)
+  {
+    mpi_communicator = communicator;
+    if (Utilities::MPI::this_mpi_process(communicator) == 0)
+      {
+        std::error_code error;
+        std::filesystem::create_directories(output_directory, error);
+        AssertThrow(!error && std::filesystem::is_directory(output_directory),
+                    ExcMessage("Output/Directory: cannot create <" +
+                               output_directory + ">: " + error.message()));
+        std::ofstream parameters(output_directory + "/parameters.prm");
+        AssertThrow(parameters,
+                    ExcMessage("Output/Directory: cannot write to <" +
+                               output_directory + ">."));
+        prm.print_parameters(parameters, ParameterHandler::PRM);
+
+        std::ofstream statistics(output_directory + "/statistics.csv");
+        statistics << "step,time,kinetic_energy,strain_energy,total_energy";
+        if (has_displacement_error)
+          statistics << ",displacement_rms_error,displacement_l2_error";
+        if (has_stress_error)
+          statistics << ",stress_rms_error";
+        statistics << '\n';
+      }
+    MPI_Barrier(communicator);
+  }
+
+
+
+  template <int dim>
+  bool
+  OutputWriter<dim>::is_output_step(const unsigned int step,
+                                    const bool         last) const
+  {
+    return step == 0 || last || (interval > 0 && step % interval == 0);
+  }
+
+
+
+  template <int dim>
+  void
+  OutputWriter<dim>::write(const unsigned int         step,
+                           const double               time,
+                           const MaterialPoints<dim> &material_points,
+                           const BackgroundGrid<dim> &grid,
+                           const ShapeFunctions<dim> &shape_functions,
+                           NodalSystem<dim>          &system,
+                           const Statistics<dim>     &statistics)
+  {
+    if (write_vtu)
+      {
+        write_particle_vtu(step, time, material_points);
+        write_grid_vtu(step, time, grid, shape_functions, system);
+      }
+    if (write_csv)
+      write_particle_csv(step, material_points);
+    write_statistics(step, time, statistics);
+  }
+
+
+
+  template <int dim>
+  const std::string &
+  OutputWriter<dim>::directory() const
+  {
+    return output_directory;
+  }
+
+
+
+  template <int dim>
+  void
+  OutputWriter<dim>::write_particle_vtu(
+    const unsigned int         step,
+    const double               time,
+    const MaterialPoints<dim> &material_points)
+  {
+    ParticlePatches<dim> patches(material_points);
+    const std::string    record = patches.write_vtu_with_pvtu_record(
+      output_directory + "/", "particles", step, mpi_communicator, 5);
+    particle_records.emplace_back(time, record);
+    if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+      {
+        std::ofstream pvd(output_directory + "/particles.pvd");
+        DataOutBase::write_pvd_record(pvd, particle_records);
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  OutputWriter<dim>::write_grid_vtu(const unsigned int         step,
+                                    const double               time,
+                                    const BackgroundGrid<dim> &grid,
+                                    const ShapeFunctions<dim> &shape_functions,
+                                    NodalSystem<dim>          &system)
+  {
+    DataOut<dim> data_out;
+    data_out.attach_dof_handler(shape_functions.dof_handler());
+    system.lumped_mass.update_ghost_values();
+    data_out.add_data_vector(system.lumped_mass, "nodal_mass");
+    const std::string names = "xyz";
+    for (unsigned int c = 0; c < dim; ++c)
+      {
+        system.velocity[c].update_ghost_values();
+        data_out.add_data_vector(system.velocity[c],
+                                 std::string("nodal_velocity_") + names[c]);
+      }
+    Vector<float> subdomain(grid.triangulation().n_active_cells());
+    for (auto &value : subdomain)
+      value = grid.triangulation().locally_owned_subdomain();
+    data_out.add_data_vector(subdomain, "subdomain");
+    data_out.build_patches(grid.mapping());
+    const std::string record = data_out.write_vtu_with_pvtu_record(
+      output_directory + "/", "grid", step, mpi_communicator, 5);
+    grid_records.emplace_back(time, record);
+    if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+      {
+        std::ofstream pvd(output_directory + "/grid.pvd");
+        DataOutBase::write_pvd_record(pvd, grid_records);
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  OutputWriter<dim>::write_particle_csv(
+    const unsigned int         step,
+    const MaterialPoints<dim> &material_points) const
+  {
+    using Layout = PropertyLayout<dim>;
+    // Stress columns in the order sxx, syy, szz, sxy, syz, sxz.
+    std::vector<std::pair<unsigned int, unsigned int>> stress_columns;
+    for (unsigned int d = 0; d < dim; ++d)
+      stress_columns.emplace_back(d, d);
+    if (dim >= 2)
+      stress_columns.emplace_back(0, 1);
+    if (dim == 3)
+      {
+        stress_columns.emplace_back(1, 2);
+        stress_columns.emplace_back(0, 2);
+      }
+
+    std::vector<std::pair<types::particle_index, std::string>> rows;
+    for (const auto &particle : material_points.particle_handler())
+      {
+        const auto properties = particle.get_properties();
+        const Point<dim> X(
+          Layout::get_vector(properties, Layout::initial_position));
+        const Point<dim>              x     = particle.get_location();
+        const SymmetricTensor<2, dim> sigma = Layout::get_stress(properties);
+        std::ostringstream            row;
+        row << std::setprecision(12) << particle.get_id();
+        for (unsigned int d = 0; d < dim; ++d)
+          row << ',' << X[d];
+        for (unsigned int d = 0; d < dim; ++d)
+          row << ',' << x[d];
+        for (unsigned int d = 0; d < dim; ++d)
+          row << ',' << x[d] - X[d];
+        for (unsigned int d = 0; d < dim; ++d)
+          row << ',' << properties[Layout::velocity + d];
+        for (const auto &[i, j] : stress_columns)
+          row << ',' << sigma[i][j];
+        row << ',' << properties[Layout::volume] << ','
+            << properties[Layout::mass] << '\n';
+        rows.emplace_back(particle.get_id(), row.str());
+      }
+
+    const auto all = Utilities::MPI::gather(mpi_communicator, rows, 0);
+    if (Utilities::MPI::this_mpi_process(mpi_communicator) != 0)
+      return;
+    std::vector<std::pair<types::particle_index, std::string>> sorted;
+    for (const auto &part : all)
+      sorted.insert(sorted.end(), part.begin(), part.end());
+    std::sort(sorted.begin(), sorted.end());
+
+    static const char *const header[3] = {
+      "id,X,x,ux,vx,sxx,volume,mass",
+      "id,X,Y,x,y,ux,uy,vx,vy,sxx,syy,sxy,volume,mass",
+      "id,X,Y,Z,x,y,z,ux,uy,uz,vx,vy,vz,sxx,syy,szz,sxy,syz,sxz,volume,mass"};
+    std::ofstream csv(output_directory + "/particles-" + step_string(step) +
+                      ".csv");
+    csv << header[dim - 1] << '\n';
+    for (const auto &row : sorted)
+      csv << row.second;
+  }
+
+
+
+  template <int dim>
+  void
+  OutputWriter<dim>::write_statistics(const unsigned int     step,
+                                      const double           time,
+                                      const Statistics<dim> &statistics)
+  {
+    if (Utilities::MPI::this_mpi_process(mpi_communicator) != 0)
+      return;
+    std::ofstream file(output_directory + "/statistics.csv", std::ios::app);
+    file << std::setprecision(12) << step << ',' << time << ','
+         << statistics.kinetic_energy << ',' << statistics.strain_energy << ','
+         << statistics.kinetic_energy + statistics.strain_energy;
+    if (statistics.has_displacement_error)
+      file << ',' << statistics.displacement_rms_error << ','
+           << statistics.displacement_l2_error;
+    if (statistics.has_stress_error)
+      file << ',' << statistics.stress_rms_error;
+    file << '\n';
+  }
+
+
+
+  template class OutputWriter<1>;
+  template class OutputWriter<2>;
+  template class OutputWriter<3>;
+} // namespace MpmOtm

@@ -1,0 +1,83 @@
+#include <deal.II/base/mpi.h>
+
+#include <mpm_otm/io/statistics.h>
+#include <mpm_otm/material_points/material_points.h>
+#include <mpm_otm/materials/material.h>
+#include <mpm_otm/problems/problem.h>
+
+#include <cmath>
+
+namespace MpmOtm
+{
+  template <int dim>
+  void
+  Statistics<dim>::compute(const MaterialPoints<dim> &material_points,
+                           const Material<dim>       &material,
+                           const Problem<dim>        &problem,
+                           const double               time)
+  {
+    using Layout = PropertyLayout<dim>;
+    has_displacement_error = problem.has_exact_solution();
+    has_stress_error       = problem.has_exact_stress();
+
+    // kinetic, strain, mass, momentum (3), squared errors (3)
+    double sums[9] = {};
+    for (const auto &particle : material_points.particle_handler())
+      {
+        const auto           properties = particle.get_properties();
+        const double         m          = properties[Layout::mass];
+        const double         volume     = properties[Layout::volume];
+        const Tensor<1, dim> v =
+          Layout::get_vector(properties, Layout::velocity);
+        const Point<dim> X(
+          Layout::get_vector(properties, Layout::initial_position));
+        const SymmetricTensor<2, dim> sigma = Layout::get_stress(properties);
+
+        sums[0] += 0.5 * m * v.norm_square();
+        sums[1] += material.strain_energy(
+          Layout::get_deformation_gradient(properties),
+          sigma,
+          properties[Layout::initial_volume],
+          volume);
+        sums[2] += m;
+        for (unsigned int d = 0; d < dim; ++d)
+          sums[3 + d] += m * v[d];
+        if (has_displacement_error)
+          {
+            const double error =
+              ((particle.get_location() - X) -
+               problem.exact_displacement(X, time))
+                .norm_square();
+            sums[6] += error;
+            sums[7] += volume * error;
+          }
+        if (has_stress_error)
+          {
+            const double error = (sigma - problem.exact_stress(X, time)).norm();
+            sums[8] += error * error;
+          }
+      }
+
+    const MPI_Comm communicator = material_points.communicator();
+    Utilities::MPI::sum(ArrayView<const double>(sums, 9),
+                        communicator,
+                        ArrayView<double>(sums, 9));
+    const double n_points =
+      static_cast<double>(material_points.n_global_points());
+
+    kinetic_energy = sums[0];
+    strain_energy  = sums[1];
+    total_mass     = sums[2];
+    for (unsigned int d = 0; d < 3; ++d)
+      momentum[d] = sums[3 + d];
+    displacement_rms_error = std::sqrt(sums[6] / n_points);
+    displacement_l2_error  = std::sqrt(sums[7]);
+    stress_rms_error       = std::sqrt(sums[8] / n_points);
+  }
+
+
+
+  template struct Statistics<1>;
+  template struct Statistics<2>;
+  template struct Statistics<3>;
+} // namespace MpmOtm

@@ -1,0 +1,369 @@
+#include <deal.II/base/mpi.h>
+
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/grid/grid_tools_cache.h>
+
+#include <mpm_otm/grid_system/background_grid.h>
+#include <mpm_otm/material_points/material_points.h>
+#include <mpm_otm/materials/material.h>
+#include <mpm_otm/problems/problem.h>
+
+#include <cmath>
+#include <sstream>
+
+namespace MpmOtm
+{
+  template <int dim>
+  MaterialPoints<dim>::MaterialPoints() = default;
+
+
+
+  template <int dim>
+  MaterialPoints<dim>::~MaterialPoints() = default;
+
+
+
+  template <int dim>
+  void
+  MaterialPoints<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Particles");
+    prm.declare_entry("Particles per cell",
+                      "12",
+                      Patterns::List(Patterns::Integer(1)),
+                      "Material points per direction in each block of the "
+                      "background grid (a cell for hypercubes, a block of "
+                      "four triangles for simplices), placed at the centres "
+                      "of a regular subdivision of the block. One value for "
+                      "all directions or one per direction, e.g. '16, 14'.");
+    prm.leave_subsection();
+  }
+
+
+
+  template <int dim>
+  void
+  MaterialPoints<dim>::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Particles");
+    const auto values = Utilities::string_to_int(
+      Utilities::split_string_list(prm.get("Particles per cell")));
+    prm.leave_subsection();
+    AssertThrow(values.size() == 1 || values.size() == dim,
+                ExcMessage("Particles/Particles per cell needs one value or " +
+                           std::to_string(dim) + " values (one per direction)."));
+    n_per_direction.assign(dim, values[0]);
+    if (values.size() == dim)
+      n_per_direction.assign(values.begin(), values.end());
+  }
+
+
+
+  template <int dim>
+  void
+  MaterialPoints<dim>::seed(const BackgroundGrid<dim> &background,
+                            const Material<dim>       &material,
+                            const Problem<dim>        &problem)
+  {
+    grid      = &background;
+    particles = std::make_unique<Particles::ParticleHandler<dim>>(
+      grid->triangulation(), grid->mapping(), PropertyLayout<dim>::n_properties);
+    particles->signals.particle_lost.connect(
+      [this](const typename Particles::ParticleIterator<dim> &particle,
+             const typename Triangulation<dim>::active_cell_iterator &) {
+        lost_points.emplace_back(particle->get_id(), particle->get_location());
+      });
+    if (grid->is_simplex())
+      cache = std::make_unique<GridTools::Cache<dim, dim>>(
+        grid->triangulation(), grid->mapping());
+
+    const BoundingBox<dim> region = problem.material_region();
+    const Point<dim>       lower  = grid->box().get_boundary_points().first;
+    const auto            &blocks = grid->subdivisions();
+
+    const auto block_is_material = [&](const std::vector<unsigned int> &b) {
+      Point<dim> centre;
+      for (unsigned int d = 0; d < dim; ++d)
+        centre[d] = lower[d] + (b[d] + 0.5) * grid->box().side_length(d) /
+                                 blocks[d];
+      return region.point_inside(centre);
+    };
+
+    std::vector<unsigned int> block(dim);
+    if (!grid->is_simplex())
+      {
+        for (const auto &cell : grid->triangulation().active_cell_iterators())
+          if (cell->is_locally_owned())
+            {
+              const Point<dim> centre = cell->center();
+              for (unsigned int d = 0; d < dim; ++d)
+                block[d] = static_cast<unsigned int>(
+                  std::floor((centre[d] - lower[d]) /
+                             (grid->box().side_length(d) / blocks[d])));
+              if (block_is_material(block))
+                insert_points_of_block(block, cell, material, problem);
+            }
+      }
+    else
+      {
+        const unsigned int n_blocks =
+          std::accumulate(blocks.begin(), blocks.end(), 1u,
+                          std::multiplies<unsigned int>());
+        for (unsigned int linear = 0; linear < n_blocks; ++linear)
+          {
+            unsigned int rest = linear;
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                block[d] = rest % blocks[d];
+                rest /= blocks[d];
+              }
+            if (block_is_material(block))
+              insert_points_of_block(
+                block,
+                typename Triangulation<dim>::active_cell_iterator(),
+                material,
+                problem);
+          }
+      }
+    particles->update_cached_numbers();
+  }
+
+
+
+  template <int dim>
+  void
+  MaterialPoints<dim>::insert_points_of_block(
+    const std::vector<unsigned int>                         &block,
+    const typename Triangulation<dim>::active_cell_iterator &block_cell,
+    const Material<dim>                                     &material,
+    const Problem<dim>              &problem)
+  {
+    using Layout           = PropertyLayout<dim>;
+    const auto &blocks     = grid->subdivisions();
+    const auto  grid_lower = grid->box().get_boundary_points().first;
+    const auto  region     = problem.material_region();
+    const auto  traction_ids = problem.traction_boundaries();
+
+    unsigned int points_per_block = 1;
+    double       block_volume     = 1;
+    unsigned int block_index      = 0;
+    Point<dim>   block_lower;
+    Tensor<1, dim> block_size;
+    for (int d = dim - 1; d >= 0; --d)
+      {
+        points_per_block *= n_per_direction[d];
+        block_size[d]  = grid->box().side_length(d) / blocks[d];
+        block_volume *= block_size[d];
+        block_lower[d] = grid_lower[d] + block[d] * block_size[d];
+        block_index    = block_index * blocks[d] + block[d];
+      }
+    const double volume = block_volume / points_per_block;
+
+    std::vector<double> properties(Layout::n_properties, 0.);
+    typename Triangulation<dim>::active_cell_iterator hint;
+    for (unsigned int local = 0; local < points_per_block; ++local)
+      {
+        Point<dim>   reference;
+        unsigned int rest = local;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            reference[d] = (rest % n_per_direction[d] + 0.5) / n_per_direction[d];
+            rest /= n_per_direction[d];
+          }
+        Point<dim> X;
+        for (unsigned int d = 0; d < dim; ++d)
+          X[d] = block_lower[d] + reference[d] * block_size[d];
+
+        // On hypercube grids the block is the cell and the reference
+        // coordinates are those within the block.
+        typename Triangulation<dim>::active_cell_iterator cell = block_cell;
+        if (grid->is_simplex())
+          {
+            const auto found =
+              GridTools::find_active_cell_around_point(*cache, X, hint);
+            AssertThrow(found.first.state() == IteratorState::valid,
+                        ExcInternalError());
+            cell      = found.first;
+            reference = found.second;
+            hint      = cell;
+          }
+
+        std::fill(properties.begin(), properties.end(), 0.);
+        properties[Layout::mass]           = material.density() * volume;
+        properties[Layout::initial_volume] = volume;
+        properties[Layout::volume]         = volume;
+        const Tensor<1, dim> v0            = problem.initial_velocity(X);
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            properties[Layout::initial_position + d]           = X[d];
+            properties[Layout::velocity + d]                   = v0[d];
+            properties[Layout::deformation_gradient + d * dim + d] = 1.;
+          }
+        // Boundary particles (thesis Sect. 2.4.1): the outermost layer next
+        // to a traction boundary represents the boundary measure V_p / spacing.
+        for (const auto id : traction_ids)
+          {
+            const unsigned int d       = id / 2;
+            const double       spacing = block_size[d] / n_per_direction[d];
+            const double       face    = (id % 2 == 0) ?
+                                           region.get_boundary_points().first[d] :
+                                           region.get_boundary_points().second[d];
+            if (std::abs(X[d] - face) < 0.5001 * spacing &&
+                properties[Layout::traction_measure] == 0.)
+              {
+                properties[Layout::traction_measure]  = volume / spacing;
+                properties[Layout::traction_boundary] = id;
+              }
+          }
+
+        particles->insert_particle(X,
+                                   reference,
+                                   static_cast<types::particle_index>(
+                                     block_index) *
+                                       points_per_block +
+                                     local,
+                                   cell,
+                                   ArrayView<const double>(properties));
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  MaterialPoints<dim>::locate()
+  {
+    lost_points.clear();
+    if (grid->is_simplex())
+      locate_on_simplices();
+    else
+      particles->sort_particles_into_subdomains_and_cells();
+
+    if (Utilities::MPI::sum(lost_points.size(), communicator()) > 0)
+      {
+        std::ostringstream message;
+        for (const auto &[id, location] : lost_points)
+          message << "material point " << id << " at (" << location
+                  << ") left the background grid. ";
+        const auto all = Utilities::MPI::all_gather(communicator(), message.str());
+        std::string text;
+        for (const auto &part : all)
+          text += part;
+        AssertThrow(false,
+                    ExcMessage(text + "Enlarge the grid (Mesh/Lower corner, "
+                                      "Mesh/Upper corner) or reduce the time "
+                                      "step."));
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  MaterialPoints<dim>::locate_on_simplices()
+  {
+    // deal.II 9.4's own sorting uses a quadrilateral inside test and puts
+    // points into wrong triangles; the GridTools::Cache search is right.
+    struct Moved
+    {
+      Point<dim>                                        location;
+      Point<dim>                                        reference;
+      types::particle_index                             id;
+      typename Triangulation<dim>::active_cell_iterator cell;
+      std::vector<double>                               properties;
+    };
+    std::vector<Moved>                                            moved;
+    std::vector<typename Particles::ParticleHandler<dim>::particle_iterator> to_remove;
+
+    for (auto particle = particles->begin(); particle != particles->end();
+         ++particle)
+      {
+        const auto       cell     = particle->get_surrounding_cell();
+        const Point<dim> location = particle->get_location();
+        const Point<dim> reference =
+          grid->mapping().transform_real_to_unit_cell(cell, location);
+        if (cell->reference_cell().contains_point(reference, 1e-12))
+          {
+            particle->set_reference_location(reference);
+            continue;
+          }
+        const auto found =
+          GridTools::find_active_cell_around_point(*cache, location, cell);
+        if (found.first.state() != IteratorState::valid)
+          {
+            lost_points.emplace_back(particle->get_id(), location);
+            to_remove.push_back(particle);
+            continue;
+          }
+        const auto properties = particle->get_properties();
+        moved.push_back({location,
+                         found.second,
+                         particle->get_id(),
+                         found.first,
+                         std::vector<double>(properties.begin(),
+                                             properties.end())});
+        to_remove.push_back(particle);
+      }
+    if (to_remove.empty())
+      return;
+    particles->remove_particles(to_remove);
+    for (const auto &point : moved)
+      particles->insert_particle(point.location,
+                                 point.reference,
+                                 point.id,
+                                 point.cell,
+                                 ArrayView<const double>(point.properties));
+    particles->update_cached_numbers();
+  }
+
+
+
+  template <int dim>
+  Particles::ParticleHandler<dim> &
+  MaterialPoints<dim>::particle_handler()
+  {
+    return *particles;
+  }
+
+
+
+  template <int dim>
+  const Particles::ParticleHandler<dim> &
+  MaterialPoints<dim>::particle_handler() const
+  {
+    return *particles;
+  }
+
+
+
+  template <int dim>
+  MPI_Comm
+  MaterialPoints<dim>::communicator() const
+  {
+    return grid->triangulation().get_communicator();
+  }
+
+
+
+  template <int dim>
+  types::particle_index
+  MaterialPoints<dim>::n_global_points() const
+  {
+    return particles->n_global_particles();
+  }
+
+
+
+  template <int dim>
+  const std::vector<unsigned int> &
+  MaterialPoints<dim>::points_per_block() const
+  {
+    return n_per_direction;
+  }
+
+
+
+  template class MaterialPoints<1>;
+  template class MaterialPoints<2>;
+  template class MaterialPoints<3>;
+} // namespace MpmOtm

@@ -1,0 +1,176 @@
+#include <deal.II/base/numbers.h>
+
+#include <mpm_otm/base/plugins.h>
+#include <mpm_otm/materials/material.h>
+#include <mpm_otm/problems/soil_column.h>
+
+#include <cmath>
+
+namespace MpmOtm
+{
+  template <int dim>
+  void
+  SoilColumn<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Soil column");
+    prm.declare_entry("Gravity",
+                      "-9.81",
+                      Patterns::Double(),
+                      "Gravitational acceleration g in the last coordinate "
+                      "direction (m/s^2; negative points down).");
+    prm.declare_entry("Series terms",
+                      "400",
+                      Patterns::Integer(1),
+                      "Number of terms of the exact series solution.");
+    prm.leave_subsection();
+  }
+
+
+
+  template <int dim>
+  void
+  SoilColumn<dim>::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Soil column");
+    gravity = prm.get_double("Gravity");
+    n_terms = prm.get_integer("Series terms");
+    prm.leave_subsection();
+  }
+
+
+
+  template <int dim>
+  void
+  SoilColumn<dim>::initialize(const Material<dim>    &material,
+                              const BoundingBox<dim> &box)
+  {
+    Problem<dim>::initialize(material, box);
+    height = box.side_length(dim - 1);
+    bottom = box.get_boundary_points().first[dim - 1];
+    c      = material.wave_speed();
+    rho    = material.density();
+  }
+
+
+
+  template <int dim>
+  Tensor<1, dim>
+  SoilColumn<dim>::initial_velocity(const Point<dim> &) const
+  {
+    return Tensor<1, dim>();
+  }
+
+
+
+  template <int dim>
+  bool
+  SoilColumn<dim>::has_body_force() const
+  {
+    return true;
+  }
+
+
+
+  template <int dim>
+  Tensor<1, dim>
+  SoilColumn<dim>::body_force(const Point<dim> &, const double) const
+  {
+    Tensor<1, dim> g;
+    g[dim - 1] = gravity;
+    return g;
+  }
+
+
+
+  template <int dim>
+  std::vector<FixedComponents<dim>>
+  SoilColumn<dim>::fixed_components() const
+  {
+    std::vector<FixedComponents<dim>> result;
+    FixedComponents<dim>              base;
+    base.boundary_id = 2 * (dim - 1);
+    base.fixed.fill(true);
+    result.push_back(base);
+    for (unsigned int d = 0; d + 1 < dim; ++d)
+      for (unsigned int side = 0; side < 2; ++side)
+        {
+          FixedComponents<dim> wall;
+          wall.boundary_id = 2 * d + side;
+          wall.fixed.fill(false);
+          wall.fixed[d] = true;
+          result.push_back(wall);
+        }
+    return result;
+  }
+
+
+
+  template <int dim>
+  bool
+  SoilColumn<dim>::has_exact_solution() const
+  {
+    return true;
+  }
+
+
+
+  template <int dim>
+  Tensor<1, dim>
+  SoilColumn<dim>::exact_displacement(const Point<dim> &X,
+                                      const double      time) const
+  {
+    const double y   = X[dim - 1] - bottom;
+    double       sum = 0;
+    for (unsigned int n = 1; n <= n_terms; ++n)
+      {
+        const double m = 2. * n - 1.;
+        const double k = m * numbers::PI / (2. * height);
+        sum += 16. * height * height / (m * m * m * std::pow(numbers::PI, 3)) *
+               (1. - std::cos(c * k * time)) * std::sin(k * y);
+      }
+    Tensor<1, dim> u;
+    u[dim - 1] = gravity / (c * c) * sum;
+    return u;
+  }
+
+
+
+  template <int dim>
+  SymmetricTensor<2, dim>
+  SoilColumn<dim>::exact_stress(const Point<dim> &X, const double time) const
+  {
+    const double y   = X[dim - 1] - bottom;
+    double       sum = 0;
+    for (unsigned int n = 1; n <= n_terms; ++n)
+      {
+        const double m = 2. * n - 1.;
+        const double k = m * numbers::PI / (2. * height);
+        sum += 16. * height * height / (m * m * m * std::pow(numbers::PI, 3)) *
+               (1. - std::cos(c * k * time)) * k * std::cos(k * y);
+      }
+    SymmetricTensor<2, dim> sigma;
+    sigma[dim - 1][dim - 1] = rho * gravity * sum;
+    return sigma;
+  }
+
+
+
+  template class SoilColumn<1>;
+  template class SoilColumn<2>;
+  template class SoilColumn<3>;
+} // namespace MpmOtm
+
+#define MPM_OTM_SOIL_COLUMN_DESCRIPTION                                      \
+  "column under self-weight, fixed bottom, free top (B6)"
+MPM_OTM_REGISTER_PLUGIN(MpmOtm::Problem<1>,
+                        MpmOtm::SoilColumn<1>,
+                        "soil column",
+                        MPM_OTM_SOIL_COLUMN_DESCRIPTION)
+MPM_OTM_REGISTER_PLUGIN(MpmOtm::Problem<2>,
+                        MpmOtm::SoilColumn<2>,
+                        "soil column",
+                        MPM_OTM_SOIL_COLUMN_DESCRIPTION)
+MPM_OTM_REGISTER_PLUGIN(MpmOtm::Problem<3>,
+                        MpmOtm::SoilColumn<3>,
+                        "soil column",
+                        MPM_OTM_SOIL_COLUMN_DESCRIPTION)

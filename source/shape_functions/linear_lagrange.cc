@@ -1,0 +1,192 @@
+#include <deal.II/dofs/dof_tools.h>
+
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_simplex_p.h>
+
+#include <deal.II/particles/particle_handler.h>
+
+#include <mpm_otm/base/plugins.h>
+#include <mpm_otm/grid_system/background_grid.h>
+#include <mpm_otm/material_points/material_points.h>
+#include <mpm_otm/shape_functions/linear_lagrange.h>
+
+namespace MpmOtm
+{
+  template <int dim>
+  void
+  LinearLagrange<dim>::declare_parameters(ParameterHandler &)
+  {}
+
+
+
+  template <int dim>
+  void
+  LinearLagrange<dim>::initialize(const BackgroundGrid<dim> &grid)
+  {
+    simplex = grid.is_simplex();
+    if (simplex)
+      fe = std::make_unique<FE_SimplexP<dim>>(1);
+    else
+      fe = std::make_unique<FE_Q<dim>>(1);
+    dofs.reinit(grid.triangulation());
+    dofs.distribute_dofs(*fe);
+  }
+
+
+
+  template <int dim>
+  const DoFHandler<dim> &
+  LinearLagrange<dim>::dof_handler() const
+  {
+    return dofs;
+  }
+
+
+
+  template <int dim>
+  void
+  LinearLagrange<dim>::reference_values(const bool        simplex,
+                                        const Point<dim> &xi,
+                                        double           *values,
+                                        Tensor<1, dim>   *reference_gradients)
+  {
+    if (simplex)
+      {
+        values[0] = 1.;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            values[0] -= xi[d];
+            values[d + 1] = xi[d];
+            reference_gradients[0][d] = -1.;
+            for (unsigned int e = 0; e < dim; ++e)
+              reference_gradients[d + 1][e] = (d == e ? 1. : 0.);
+          }
+        return;
+      }
+
+    // Vertex i of a hypercube sits at xi_d = bit d of i; its function is the
+    // product over d of xi_d or 1 - xi_d.
+    for (unsigned int i = 0; i < (1u << dim); ++i)
+      {
+        double factors[dim];
+        double signs[dim];
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            const bool upper = (i >> d) & 1u;
+            factors[d]       = upper ? xi[d] : 1. - xi[d];
+            signs[d]         = upper ? 1. : -1.;
+          }
+        double value = 1.;
+        for (unsigned int d = 0; d < dim; ++d)
+          value *= factors[d];
+        values[i] = value;
+        for (unsigned int e = 0; e < dim; ++e)
+          {
+            double derivative = signs[e];
+            for (unsigned int d = 0; d < dim; ++d)
+              if (d != e)
+                derivative *= factors[d];
+            reference_gradients[i][e] = derivative;
+          }
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  LinearLagrange<dim>::evaluate(const MaterialPoints<dim>         &material_points,
+                                const Utilities::MPI::Partitioner &partitioner,
+                                ParticleShapeData<dim>            &data) const
+  {
+    const auto        &particles = material_points.particle_handler();
+    const unsigned int n_functions = fe->n_dofs_per_cell();
+    const unsigned int n_particles = particles.n_locally_owned_particles();
+
+    data.offsets.resize(n_particles + 1);
+    data.indices.resize(n_particles * n_functions);
+    data.values.resize(n_particles * n_functions);
+    data.gradients.resize(n_particles * n_functions);
+
+    std::vector<types::global_dof_index> dof_indices(n_functions);
+    std::vector<unsigned int>            local_indices(n_functions);
+    std::vector<Point<dim>>              vertices(n_functions);
+    std::vector<Tensor<1, dim>>          reference_gradients(n_functions);
+    typename Triangulation<dim>::active_cell_iterator current_cell;
+
+    unsigned int k = 0;
+    for (const auto &particle : particles)
+      {
+        const auto cell = particle.get_surrounding_cell();
+        if (cell != current_cell)
+          {
+            current_cell = cell;
+            typename DoFHandler<dim>::active_cell_iterator dof_cell(
+              &cell->get_triangulation(), cell->level(), cell->index(), &dofs);
+            dof_cell->get_dof_indices(dof_indices);
+            for (unsigned int i = 0; i < n_functions; ++i)
+              {
+                local_indices[i] = partitioner.global_to_local(dof_indices[i]);
+                vertices[i]      = cell->vertex(i);
+              }
+          }
+
+        const unsigned int offset = k * n_functions;
+        data.offsets[k]           = offset;
+        double        *values     = &data.values[offset];
+        Tensor<1, dim> *gradients = &data.gradients[offset];
+        reference_values(simplex,
+                         particle.get_reference_location(),
+                         values,
+                         reference_gradients.data());
+
+        // Isoparametric Jacobian J_ab = sum_i x_i,a dN_i/dxi_b.
+        Tensor<2, dim> jacobian;
+        for (unsigned int i = 0; i < n_functions; ++i)
+          for (unsigned int a = 0; a < dim; ++a)
+            for (unsigned int b = 0; b < dim; ++b)
+              jacobian[a][b] += vertices[i][a] * reference_gradients[i][b];
+        const Tensor<2, dim> inverse_transpose = transpose(invert(jacobian));
+        for (unsigned int i = 0; i < n_functions; ++i)
+          {
+            data.indices[offset + i] = local_indices[i];
+            gradients[i]             = inverse_transpose * reference_gradients[i];
+          }
+        ++k;
+      }
+    data.offsets[n_particles] = n_particles * n_functions;
+    Assert(k == n_particles, ExcInternalError());
+  }
+
+
+
+  template <int dim>
+  IndexSet
+  LinearLagrange<dim>::boundary_functions(
+    const types::boundary_id boundary_id) const
+  {
+    return DoFTools::extract_boundary_dofs(dofs,
+                                           ComponentMask(),
+                                           std::set<types::boundary_id>{
+                                             boundary_id});
+  }
+
+
+
+  template class LinearLagrange<1>;
+  template class LinearLagrange<2>;
+  template class LinearLagrange<3>;
+} // namespace MpmOtm
+
+MPM_OTM_REGISTER_PLUGIN(MpmOtm::ShapeFunctions<1>,
+                        MpmOtm::LinearLagrange<1>,
+                        "linear",
+                        "piecewise-linear Lagrange (FE_Q(1) / FE_SimplexP(1))")
+MPM_OTM_REGISTER_PLUGIN(MpmOtm::ShapeFunctions<2>,
+                        MpmOtm::LinearLagrange<2>,
+                        "linear",
+                        "piecewise-linear Lagrange (FE_Q(1) / FE_SimplexP(1))")
+MPM_OTM_REGISTER_PLUGIN(MpmOtm::ShapeFunctions<3>,
+                        MpmOtm::LinearLagrange<3>,
+                        "linear",
+                        "piecewise-linear Lagrange (FE_Q(1) / FE_SimplexP(1))")

@@ -1,0 +1,333 @@
+#include <deal.II/base/timer.h>
+
+#include <mpm_otm/algorithms/nodal_update.h>
+#include <mpm_otm/algorithms/time_stepper.h>
+#include <mpm_otm/base/plugins.h>
+#include <mpm_otm/grid_system/background_grid.h>
+#include <mpm_otm/grid_system/mass_matrix.h>
+#include <mpm_otm/grid_system/nodal_system.h>
+#include <mpm_otm/io/output_writer.h>
+#include <mpm_otm/material_points/material_points.h>
+#include <mpm_otm/materials/material.h>
+#include <mpm_otm/problems/problem.h>
+#include <mpm_otm/shape_functions/shape_functions.h>
+#include <mpm_otm/simulator/simulator.h>
+
+#include <cmath>
+#include <filesystem>
+#include <iomanip>
+#include <sstream>
+
+namespace MpmOtm
+{
+  namespace
+  {
+    /**
+     * The "additional information" of a deal.II exception, without the
+     * banner.
+     */
+    std::string
+    message_of(const std::exception &error)
+    {
+      if (const auto *exception = dynamic_cast<const ExceptionBase *>(&error))
+        {
+          std::ostringstream text;
+          exception->print_info(text);
+          return text.str();
+        }
+      return error.what();
+    }
+  } // namespace
+
+
+
+  unsigned int
+  read_dimension(const std::string &filename)
+  {
+    ParameterHandler prm;
+    prm.declare_entry("Dimension",
+                      "1",
+                      Patterns::Integer(1, 3),
+                      "Space dimension: 1, 2 or 3.");
+    if (!filename.empty())
+      {
+        AssertThrow(std::filesystem::is_regular_file(filename),
+                    ExcMessage("Parameter file <" + filename +
+                               "> does not exist or is not a file."));
+        prm.parse_input(filename, "", true);
+      }
+    return prm.get_integer("Dimension");
+  }
+
+
+
+  template <int dim>
+  Simulator<dim>::Simulator(const MPI_Comm communicator, std::ostream &log)
+    : communicator(communicator)
+    , pcout(log, Utilities::MPI::this_mpi_process(communicator) == 0)
+  {}
+
+
+
+  template <int dim>
+  Simulator<dim>::~Simulator() = default;
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    prm.declare_entry("Dimension",
+                      "1",
+                      Patterns::Integer(1, 3),
+                      "Space dimension: 1, 2 or 3.");
+    prm.declare_entry("Problem",
+                      "vibrating bar",
+                      Patterns::Selection(PluginRegistry<Problem<dim>>::selection()),
+                      "Benchmark or user problem:" +
+                        PluginRegistry<Problem<dim>>::documentation());
+    prm.declare_entry("Method",
+                      "MPM",
+                      Patterns::Selection("MPM"),
+                      "MPM: material-point method, shape functions on the "
+                      "fixed background grid (journal Alg. 1).");
+    prm.declare_entry("Update scheme",
+                      "USL",
+                      Patterns::Selection(
+                        PluginRegistry<NodalUpdate<dim>>::selection()),
+                      "Nodal update:" +
+                        PluginRegistry<NodalUpdate<dim>>::documentation());
+    prm.declare_entry("Shape functions",
+                      "linear",
+                      Patterns::Selection(
+                        PluginRegistry<ShapeFunctions<dim>>::selection()),
+                      "Shape-function family:" +
+                        PluginRegistry<ShapeFunctions<dim>>::documentation());
+    prm.declare_entry("Mass matrix",
+                      "lumped",
+                      Patterns::Selection(
+                        PluginRegistry<MassMatrix<dim>>::selection()),
+                      "Use of the mass matrix:" +
+                        PluginRegistry<MassMatrix<dim>>::documentation());
+
+    prm.enter_subsection("Time");
+    prm.declare_entry("End time",
+                      "1e-3",
+                      Patterns::Double(0.),
+                      "Simulated time T (s).");
+    prm.declare_entry("Time step",
+                      "1e-5",
+                      Patterns::Double(0.),
+                      "Time step dt (s); must satisfy dt <= h / c (thesis "
+                      "Eq. 2.48) with h the smallest cell size and c the "
+                      "wave speed.");
+    prm.leave_subsection();
+
+    BackgroundGrid<dim>::declare_parameters(prm);
+    MaterialPoints<dim>::declare_parameters(prm);
+    Material<dim>::declare_common_parameters(
+      prm,
+      PluginRegistry<Material<dim>>::selection(),
+      PluginRegistry<Material<dim>>::documentation());
+    OutputWriter<dim>::declare_parameters(prm);
+
+    PluginRegistry<Problem<dim>>::declare_parameters(prm);
+    PluginRegistry<NodalUpdate<dim>>::declare_parameters(prm);
+    PluginRegistry<ShapeFunctions<dim>>::declare_parameters(prm);
+    PluginRegistry<MassMatrix<dim>>::declare_parameters(prm);
+    PluginRegistry<Material<dim>>::declare_parameters(prm);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::parse_parameters(ParameterHandler &prm)
+  {
+    AssertThrow(prm.get_integer("Dimension") == dim, ExcInternalError());
+
+    problem_description =
+      PluginRegistry<Problem<dim>>::create(prm.get("Problem"));
+    problem_description->parse_parameters(prm);
+    nodal_update =
+      PluginRegistry<NodalUpdate<dim>>::create(prm.get("Update scheme"));
+    shape_functions =
+      PluginRegistry<ShapeFunctions<dim>>::create(prm.get("Shape functions"));
+    mass_matrix =
+      PluginRegistry<MassMatrix<dim>>::create(prm.get("Mass matrix"));
+
+    prm.enter_subsection("Material");
+    material = PluginRegistry<Material<dim>>::create(prm.get("Model"));
+    prm.leave_subsection();
+    material->parse_parameters(prm);
+
+    prm.enter_subsection("Time");
+    end_time  = prm.get_double("End time");
+    time_step = prm.get_double("Time step");
+    prm.leave_subsection();
+    AssertThrow(time_step > 0,
+                ExcMessage("Time/Time step must be positive."));
+
+    grid = std::make_unique<BackgroundGrid<dim>>();
+    grid->parse_parameters(prm);
+    points = std::make_unique<MaterialPoints<dim>>();
+    points->parse_parameters(prm);
+    output = std::make_unique<OutputWriter<dim>>();
+    output->parse_parameters(prm);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::setup(const ParameterHandler &prm)
+  {
+    grid->create(communicator);
+
+    const double h           = grid->minimal_cell_size();
+    const double wave_speed  = material->wave_speed();
+    const double critical_dt = h / wave_speed;
+    if (time_step > critical_dt)
+      {
+        std::ostringstream message;
+        message << "Time/Time step = " << time_step
+                << " exceeds the CFL bound h / c = " << critical_dt
+                << " (thesis Eq. 2.48; h = " << h
+                << " is the smallest cell size, c = " << wave_speed
+                << " the wave speed). Choose a time step of at most "
+                << critical_dt << ".";
+        AssertThrow(false, ExcMessage(message.str()));
+      }
+
+    problem_description->initialize(*material, grid->box());
+    points->seed(*grid, *material, *problem_description);
+    AssertThrow(points->n_global_points() > 0,
+                ExcMessage("No material point was created: the problem's "
+                           "material region contains no block centre of "
+                           "the grid."));
+    shape_functions->initialize(*grid);
+    system = std::make_unique<NodalSystem<dim>>();
+    system->setup(*shape_functions, problem_description->fixed_components());
+    output->initialize(prm,
+                       problem_description->has_exact_solution(),
+                       problem_description->has_exact_stress(),
+                       communicator);
+    current_time = 0;
+
+    pcout << "mpm-otm: " << dim << "D, "
+          << grid->triangulation().n_global_active_cells() << " cells, "
+          << shape_functions->dof_handler().n_dofs() << " shape functions, "
+          << points->n_global_points() << " material points, "
+          << Utilities::MPI::n_mpi_processes(communicator) << " MPI rank(s)"
+          << std::endl;
+  }
+
+
+
+  template <int dim>
+  Statistics<dim>
+  Simulator<dim>::run()
+  {
+    TimerOutput timer(communicator,
+                      pcout,
+                      TimerOutput::summary,
+                      TimerOutput::wall_times);
+    TimeStepper<dim> stepper(*points,
+                             *shape_functions,
+                             *system,
+                             *mass_matrix,
+                             *nodal_update,
+                             *material,
+                             *problem_description,
+                             timer);
+
+    const unsigned int n_steps =
+      static_cast<unsigned int>(std::ceil(end_time / time_step - 1e-8));
+    Timer              wall_clock(communicator, true);
+    Statistics<dim>    statistics;
+
+    const auto report = [&](const unsigned int step) {
+      TimerOutput::Scope scope(timer, "output");
+      statistics.compute(*points, *material, *problem_description, current_time);
+      output->write(step,
+                    current_time,
+                    *points,
+                    *grid,
+                    *shape_functions,
+                    *system,
+                    statistics);
+      pcout << "step " << std::setw(7) << step << "  t = " << std::scientific
+            << std::setprecision(4) << current_time
+            << "  kinetic energy = " << statistics.kinetic_energy
+            << "  wall time = " << std::fixed << std::setprecision(2)
+            << wall_clock.wall_time() << " s" << std::defaultfloat
+            << std::endl;
+    };
+
+    report(0);
+    for (unsigned int step = 1; step <= n_steps; ++step)
+      {
+        const double dt = std::min(time_step, end_time - current_time);
+        try
+          {
+            stepper.advance(current_time, dt);
+          }
+        catch (const std::exception &error)
+          {
+            std::ostringstream message;
+            message << "Stopped in time step " << step << " (t = "
+                    << current_time << " to " << current_time + dt
+                    << "); the output up to the last output step is in <"
+                    << output->directory() << ">. " << message_of(error);
+            AssertThrow(false, ExcMessage(message.str()));
+          }
+        current_time = (step == n_steps) ? end_time : current_time + dt;
+        if (output->is_output_step(step, step == n_steps))
+          report(step);
+      }
+    return statistics;
+  }
+
+
+
+  template <int dim>
+  const MaterialPoints<dim> &
+  Simulator<dim>::material_points() const
+  {
+    return *points;
+  }
+
+
+
+  template <int dim>
+  const NodalSystem<dim> &
+  Simulator<dim>::nodal_system() const
+  {
+    return *system;
+  }
+
+
+
+  template <int dim>
+  const Problem<dim> &
+  Simulator<dim>::problem() const
+  {
+    return *problem_description;
+  }
+
+
+
+  template <int dim>
+  double
+  Simulator<dim>::time() const
+  {
+    return current_time;
+  }
+
+
+
+  template class Simulator<1>;
+  template class Simulator<2>;
+  template class Simulator<3>;
+} // namespace MpmOtm
