@@ -280,8 +280,14 @@ namespace MpmOtm
       {
         const auto       cell     = particle->get_surrounding_cell();
         const Point<dim> location = particle->get_location();
-        const Point<dim> reference =
-          grid->mapping().transform_real_to_unit_cell(cell, location);
+        // Barycentric coordinates in the (affine) simplex: xi = J^-1 (x - v0)
+        // with the columns of J the edges v_{d+1} - v0.
+        Tensor<2, dim> jacobian;
+        for (unsigned int d = 0; d < dim; ++d)
+          for (unsigned int a = 0; a < dim; ++a)
+            jacobian[a][d] = cell->vertex(d + 1)[a] - cell->vertex(0)[a];
+        const Point<dim> reference(invert(jacobian) *
+                                   (location - cell->vertex(0)));
         if (cell->reference_cell().contains_point(reference, 1e-12))
           {
             particle->set_reference_location(reference);

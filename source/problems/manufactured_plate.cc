@@ -125,8 +125,12 @@ namespace MpmOtm
     for (unsigned int side = 0; side < 2 * dim; ++side)
       {
         FixedComponents<dim> fixed;
+        // The manufactured displacement vanishes only in the normal
+        // direction on each side (u1 = 0 at X1 = 0, 1; u2 = 0 at X2 = 0, 1),
+        // so only the normal component is fixed.
         fixed.boundary_id = side;
-        fixed.fixed.fill(true);
+        fixed.fixed.fill(false);
+        fixed.fixed[side / 2] = true;
         result.push_back(fixed);
       }
     return result;

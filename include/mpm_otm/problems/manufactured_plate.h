@@ -9,7 +9,8 @@ namespace MpmOtm
    * Neo-Hookean unit plate with the manufactured axis-aligned displacement
    * u1 = A sin(2 pi X1) sin(c pi t), u2 = A sin(2 pi X2) sin(c pi t + pi),
    * c = sqrt(E / rho0), and the body force that makes it exact
-   * (BENCHMARKS.md B3, journal Sect. 8.3); fixed on the whole boundary.
+   * (BENCHMARKS.md B3, journal Sect. 8.3). Each side is fixed in its normal
+   * direction: the manufactured displacement vanishes only there.
    * Two-dimensional only.
    */
   template <int dim>
