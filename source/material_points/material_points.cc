@@ -13,6 +13,97 @@
 
 namespace MpmOtm
 {
+  namespace
+  {
+    /**
+     * Barycentric coordinates (the reference coordinates of deal.II's
+     * simplex) of @p point in the affine simplex @p cell.
+     */
+    template <int dim>
+    Point<dim>
+    barycentric(const typename Triangulation<dim>::active_cell_iterator &cell,
+                const Point<dim> &point)
+    {
+      Tensor<2, dim> jacobian;
+      for (unsigned int d = 0; d < dim; ++d)
+        for (unsigned int a = 0; a < dim; ++a)
+          jacobian[a][d] = cell->vertex(d + 1)[a] - cell->vertex(0)[a];
+      return Point<dim>(invert(jacobian) * (point - cell->vertex(0)));
+    }
+
+    template <int dim>
+    bool
+    inside_simplex(const Point<dim> &xi)
+    {
+      double sum = 0;
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          if (xi[d] < -1e-12)
+            return false;
+          sum += xi[d];
+        }
+      return sum <= 1. + 1e-12;
+    }
+
+    /**
+     * The simplex that contains @p point and the point's barycentric
+     * coordinates there: the hint, the cells that share a vertex with it,
+     * deal.II's search (whose inside test is the one of quadrilaterals in
+     * 9.4, so its answer is checked), its vertex neighbours, and at last
+     * every cell. An invalid iterator if no cell contains the point.
+     */
+    template <int dim>
+    std::pair<typename Triangulation<dim>::active_cell_iterator, Point<dim>>
+    find_simplex(const GridTools::Cache<dim, dim>                        &cache,
+                 const Point<dim>                                        &point,
+                 const typename Triangulation<dim>::active_cell_iterator &hint)
+    {
+      using Iterator = typename Triangulation<dim>::active_cell_iterator;
+      const auto try_cell = [&](const Iterator &cell, Point<dim> &xi) {
+        xi = barycentric<dim>(cell, point);
+        return inside_simplex(xi);
+      };
+      const auto try_vertex_neighbours = [&](const Iterator &cell,
+                                             Iterator       &found,
+                                             Point<dim>     &xi) {
+        const auto &vertex_to_cells = cache.get_vertex_to_cell_map();
+        for (const unsigned int v : cell->vertex_indices())
+          for (const auto &neighbour : vertex_to_cells[cell->vertex_index(v)])
+            if (try_cell(neighbour, xi))
+              {
+                found = neighbour;
+                return true;
+              }
+        return false;
+      };
+
+      Point<dim> xi;
+      Iterator   found;
+      if (hint.state() == IteratorState::valid)
+        {
+          if (try_cell(hint, xi))
+            return {hint, xi};
+          if (try_vertex_neighbours(hint, found, xi))
+            return {found, xi};
+        }
+      const auto guess = GridTools::find_active_cell_around_point(cache, point);
+      if (guess.first.state() == IteratorState::valid)
+        {
+          if (try_cell(guess.first, xi))
+            return {guess.first, xi};
+          if (try_vertex_neighbours(guess.first, found, xi))
+            return {found, xi};
+        }
+      for (const auto &cell :
+           cache.get_triangulation().active_cell_iterators())
+        if (try_cell(cell, xi))
+          return {cell, xi};
+      return {Iterator(), xi};
+    }
+  } // namespace
+
+
+
   template <int dim>
   MaterialPoints<dim>::MaterialPoints() = default;
 
@@ -179,8 +270,7 @@ namespace MpmOtm
         typename Triangulation<dim>::active_cell_iterator cell = block_cell;
         if (grid->is_simplex())
           {
-            const auto found =
-              GridTools::find_active_cell_around_point(*cache, X, hint);
+            const auto found = find_simplex<dim>(*cache, X, hint);
             AssertThrow(found.first.state() == IteratorState::valid,
                         ExcInternalError());
             cell      = found.first;
@@ -263,7 +353,7 @@ namespace MpmOtm
   MaterialPoints<dim>::locate_on_simplices()
   {
     // deal.II 9.4's own sorting uses a quadrilateral inside test and puts
-    // points into wrong triangles; the GridTools::Cache search is right.
+    // points into wrong triangles, and so does its Cache search with a hint.
     struct Moved
     {
       Point<dim>                                        location;
@@ -280,21 +370,12 @@ namespace MpmOtm
       {
         const auto       cell     = particle->get_surrounding_cell();
         const Point<dim> location = particle->get_location();
-        // Barycentric coordinates in the (affine) simplex: xi = J^-1 (x - v0)
-        // with the columns of J the edges v_{d+1} - v0.
-        Tensor<2, dim> jacobian;
-        for (unsigned int d = 0; d < dim; ++d)
-          for (unsigned int a = 0; a < dim; ++a)
-            jacobian[a][d] = cell->vertex(d + 1)[a] - cell->vertex(0)[a];
-        const Point<dim> reference(invert(jacobian) *
-                                   (location - cell->vertex(0)));
-        if (cell->reference_cell().contains_point(reference, 1e-12))
+        const auto       found    = find_simplex<dim>(*cache, location, cell);
+        if (found.first == cell)
           {
-            particle->set_reference_location(reference);
+            particle->set_reference_location(found.second);
             continue;
           }
-        const auto found =
-          GridTools::find_active_cell_around_point(*cache, location, cell);
         if (found.first.state() != IteratorState::valid)
           {
             lost_points.emplace_back(particle->get_id(), location);

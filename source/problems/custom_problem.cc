@@ -66,6 +66,17 @@ namespace MpmOtm
                       "Body force per unit mass: dim expressions in the "
                       "initial position (x, y, z) and time t, separated by "
                       "';'.");
+    prm.declare_entry("Material lower corner",
+                      "",
+                      Patterns::List(Patterns::Double(), 0, dim),
+                      "Lower corner of the box filled with material at t = 0 "
+                      "(empty: the whole grid). Blocks whose centre lies in "
+                      "the box are filled.");
+    prm.declare_entry("Material upper corner",
+                      "",
+                      Patterns::List(Patterns::Double(), 0, dim),
+                      "Upper corner of the box filled with material at t = 0 "
+                      "(empty: the whole grid).");
     prm.declare_entry("Fixed components",
                       "",
                       Patterns::Anything(),
@@ -112,6 +123,8 @@ namespace MpmOtm
         traction_ids.push_back(id);
       }
     traction_function = make_function<dim>(prm.get("Traction"), "Traction");
+    region_lower = prm.get("Material lower corner");
+    region_upper = prm.get("Material upper corner");
     if (!prm.get("Exact displacement").empty())
       displacement = make_function<dim>(prm.get("Exact displacement"),
                                         "Exact displacement");
@@ -126,6 +139,34 @@ namespace MpmOtm
                                  const BoundingBox<dim> &box)
   {
     Problem<dim>::initialize(material, box);
+  }
+
+
+
+  template <int dim>
+  BoundingBox<dim>
+  CustomProblem<dim>::material_region() const
+  {
+    if (region_lower.empty() && region_upper.empty())
+      return this->grid_box;
+    const auto lower =
+      Utilities::string_to_double(Utilities::split_string_list(region_lower));
+    const auto upper =
+      Utilities::string_to_double(Utilities::split_string_list(region_upper));
+    AssertThrow(lower.size() == dim && upper.size() == dim,
+                ExcMessage("Custom problem/Material lower corner and "
+                           "Material upper corner need " +
+                           std::to_string(dim) + " values each."));
+    Point<dim> p1, p2;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        p1[d] = lower[d];
+        p2[d] = upper[d];
+        AssertThrow(p2[d] > p1[d],
+                    ExcMessage("Custom problem/Material upper corner must be "
+                               "above Material lower corner."));
+      }
+    return BoundingBox<dim>(std::make_pair(p1, p2));
   }
 
 

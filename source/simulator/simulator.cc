@@ -227,7 +227,7 @@ namespace MpmOtm
 
   template <int dim>
   Statistics<dim>
-  Simulator<dim>::run()
+  Simulator<dim>::run(const std::function<void(unsigned int)> &observer)
   {
     TimerOutput timer(communicator,
                       pcout,
@@ -263,6 +263,8 @@ namespace MpmOtm
             << "  wall time = " << std::fixed << std::setprecision(2)
             << wall_clock.wall_time() << " s" << std::defaultfloat
             << std::endl;
+      if (observer)
+        observer(step);
     };
 
     report(0);

@@ -41,6 +41,9 @@ namespace MpmOtm
     std::vector<FixedComponents<dim>>
     fixed_components() const override;
 
+    BoundingBox<dim>
+    material_region() const override;
+
     std::vector<types::boundary_id>
     traction_boundaries() const override;
 
@@ -64,6 +67,8 @@ namespace MpmOtm
     std::unique_ptr<FunctionParser<dim>> displacement;
     std::vector<FixedComponents<dim>>    fixed;
     std::vector<types::boundary_id>      traction_ids;
+    std::string                          region_lower;
+    std::string                          region_upper;
   };
 } // namespace MpmOtm
 

@@ -1,6 +1,8 @@
 #ifndef mpm_otm_shape_functions_linear_lagrange_h
 #define mpm_otm_shape_functions_linear_lagrange_h
 
+#include <deal.II/base/parameter_handler.h>
+
 #include <deal.II/fe/fe.h>
 
 #include <mpm_otm/shape_functions/shape_functions.h>

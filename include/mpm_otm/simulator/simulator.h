@@ -7,6 +7,7 @@
 
 #include <mpm_otm/io/statistics.h>
 
+#include <functional>
 #include <memory>
 #include <ostream>
 #include <string>
@@ -80,9 +81,11 @@ namespace MpmOtm
 
     /**
      * Run all time steps to the end time; returns the statistics at the end.
+     * @p observer, if given, is called with the step number after the output
+     * of every output step (step 0 included).
      */
     Statistics<dim>
-    run();
+    run(const std::function<void(unsigned int)> &observer = {});
 
     /**
      * The material points (for tests and post-processing).

@@ -1,0 +1,90 @@
+// Parallel runs on a p4est-distributed grid with two MPI ranks give the
+// serial result: the 2D bar of B5 on quadrilaterals and a 3D bar on
+// hexahedra, each run once on MPI_COMM_WORLD (2 ranks) and once on rank 0
+// alone; the error norms against the exact solution and the energies agree
+// to round-off, and the errors are small.
+
+#include "../tests.h"
+
+using namespace MpmOtm;
+using namespace MpmOtmTests;
+
+template <int dim>
+void
+compare(const std::string &label, const std::string &changes)
+{
+  const MPI_Comm world = MPI_COMM_WORLD;
+  auto parallel_run    = make_simulator<dim>("", changes, "output-" + label);
+  const auto parallel  = parallel_run->run();
+
+  Statistics<dim> serial;
+  if (Utilities::MPI::this_mpi_process(world) == 0)
+    {
+      auto serial_run = make_simulator<dim>(
+        "", changes, "output-" + label + "-serial", MPI_COMM_SELF);
+      serial = serial_run->run();
+    }
+  const double serial_values[3] = {serial.displacement_l2_error,
+                                   serial.kinetic_energy,
+                                   serial.strain_energy};
+  double       broadcast[3];
+  for (unsigned int i = 0; i < 3; ++i)
+    broadcast[i] = Utilities::MPI::broadcast(world, serial_values[i], 0);
+
+  const double parallel_values[3] = {parallel.displacement_l2_error,
+                                     parallel.kinetic_energy,
+                                     parallel.strain_energy};
+  for (unsigned int i = 0; i < 3; ++i)
+    check(std::abs(parallel_values[i] - broadcast[i]) <=
+            1e-10 * std::abs(broadcast[i]),
+          label + ": 2 ranks differ from 1 rank");
+  check(parallel.displacement_rms_error < 0.01 * 0.1 / (3.14159 / 25.),
+        label + ": error above 1 % of the amplitude");
+  deallog << label << ": 1 and 2 ranks agree, L2 displacement error "
+          << rounded(parallel.displacement_l2_error, 2) << std::endl;
+}
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  initlog();
+  const std::string common = R"(
+set Problem = vibrating bar
+set Update scheme = MUSL
+set Mass matrix = consistent
+subsection Time
+  set End time = 0.02
+  set Time step = 1e-4
+end
+subsection Material
+  set Young's modulus = 100
+  set Density = 1
+end
+subsection Vibrating bar
+  set Initial velocity amplitude = 0.1
+end
+)";
+  compare<2>("2D", common + R"(
+set Dimension = 2
+subsection Mesh
+  set Lower corner = 0, 0
+  set Upper corner = 25, 2
+  set Subdivisions = 16, 2
+end
+subsection Particles
+  set Particles per cell = 4
+end
+)");
+  compare<3>("3D", common + R"(
+set Dimension = 3
+subsection Mesh
+  set Lower corner = 0, 0, 0
+  set Upper corner = 25, 2, 2
+  set Subdivisions = 8, 1, 1
+end
+subsection Particles
+  set Particles per cell = 3
+end
+)");
+}

@@ -1,0 +1,101 @@
+#ifndef mpm_otm_tests_tests_h
+#define mpm_otm_tests_tests_h
+
+// Helpers shared by the test programs: the "output" file that the deal.II
+// harness compares, a check that stops the test with a message, and runs of
+// the benchmark parameter files in prm/ with appended changes.
+
+#include <deal.II/base/logstream.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/parameter_handler.h>
+
+#include <mpm_otm/simulator/simulator.h>
+
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+#include <sstream>
+#include <string>
+
+namespace MpmOtmTests
+{
+  using namespace dealii;
+
+  /**
+   * Attach deallog to the file "output" (rank 0 only in parallel tests).
+   */
+  inline void
+  initlog(const MPI_Comm communicator = MPI_COMM_WORLD)
+  {
+    static std::ofstream logfile;
+    if (Utilities::MPI::this_mpi_process(communicator) == 0)
+      {
+        logfile.open("output");
+        deallog.attach(logfile, false);
+      }
+    deallog.depth_console(0);
+  }
+
+  /**
+   * Stop the test (non-zero exit) with @p message unless @p condition.
+   */
+  inline void
+  check(const bool condition, const std::string &message)
+  {
+    AssertThrow(condition, ExcMessage("Test check failed: " + message));
+  }
+
+  /**
+   * A number with @p digits significant digits, for output that must not
+   * depend on round-off.
+   */
+  inline std::string
+  rounded(const double value, const unsigned int digits = 3)
+  {
+    std::ostringstream text;
+    text << std::setprecision(digits) << std::scientific << value;
+    return text.str();
+  }
+
+  /**
+   * Full path of a parameter file in prm/.
+   */
+  inline std::string
+  prm_file(const std::string &name)
+  {
+    return std::string(MPM_OTM_SOURCE_DIR) + "/prm/" + name;
+  }
+
+  /**
+   * Build a simulator from prm/@p name with the lines @p changes appended
+   * (as a user would append them) and VTU output switched off; output goes
+   * to the test's directory @p directory.
+   */
+  template <int dim>
+  std::unique_ptr<MpmOtm::Simulator<dim>>
+  make_simulator(const std::string &name,
+                 const std::string &changes,
+                 const std::string &directory,
+                 const MPI_Comm     communicator = MPI_COMM_WORLD)
+  {
+    static std::ostringstream quiet;
+    ParameterHandler          prm;
+    MpmOtm::Simulator<dim>::declare_parameters(prm);
+    if (!name.empty())
+      prm.parse_input(prm_file(name));
+    prm.parse_input_from_string(changes + "\nsubsection Output\n"
+                                          "set Directory = " +
+                                directory +
+                                "\nset Write VTU = false\n"
+                                "end\n");
+    auto simulator =
+      std::make_unique<MpmOtm::Simulator<dim>>(communicator, quiet);
+    simulator->parse_parameters(prm);
+    simulator->setup(prm);
+    return simulator;
+  }
+} // namespace MpmOtmTests
+
+#endif

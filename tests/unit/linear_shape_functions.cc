@@ -1,0 +1,144 @@
+// The closed-form linear functions: equal to deal.II's FE_Q(1) and
+// FE_SimplexP(1) at random reference points, partition of unity, and linear
+// reproduction at the material points of real grids (1D, quadrilaterals,
+// hexahedra, triangles, tetrahedra).
+
+#include <deal.II/base/partitioner.h>
+
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_simplex_p.h>
+
+#include <mpm_otm/shape_functions/linear_lagrange.h>
+
+#include <random>
+
+#include "components.h"
+
+using namespace MpmOtm;
+using namespace MpmOtmTests;
+
+template <int dim>
+void
+test_reference(const bool simplex)
+{
+  std::unique_ptr<FiniteElement<dim>> fe;
+  if (simplex)
+    fe = std::make_unique<FE_SimplexP<dim>>(1);
+  else
+    fe = std::make_unique<FE_Q<dim>>(1);
+  const unsigned int n = fe->n_dofs_per_cell();
+  std::mt19937       random(42);
+  std::uniform_real_distribution<double> uniform(0., 1.);
+  double max_error = 0;
+  for (unsigned int trial = 0; trial < 100; ++trial)
+    {
+      Point<dim> xi;
+      double     sum = 0;
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          xi[d] = uniform(random) * (simplex ? 1. - sum : 1.);
+          sum += xi[d];
+        }
+      std::vector<double>         values(n);
+      std::vector<Tensor<1, dim>> gradients(n);
+      LinearLagrange<dim>::reference_values(
+        simplex, xi, values.data(), gradients.data());
+      double         unity = 0;
+      Tensor<1, dim> gradient_sum;
+      for (unsigned int i = 0; i < n; ++i)
+        {
+          max_error = std::max(max_error,
+                               std::abs(values[i] - fe->shape_value(i, xi)));
+          max_error = std::max(
+            max_error, (gradients[i] - fe->shape_grad(i, xi)).norm());
+          unity += values[i];
+          gradient_sum += gradients[i];
+          check(values[i] >= -1e-15, "negative linear function");
+        }
+      check(std::abs(unity - 1.) < 1e-14, "no partition of unity");
+      check(gradient_sum.norm() < 1e-14, "gradients do not sum to zero");
+    }
+  check(max_error < 1e-14, "closed form differs from " + fe->get_name());
+  deallog << dim << "D " << fe->get_name()
+          << ": closed form equals deal.II's element, partition of unity"
+          << std::endl;
+}
+
+template <int dim>
+void
+test_reproduction(const std::string &cell_type)
+{
+  const std::string corner = (dim == 1 ? "0" : dim == 2 ? "0, 0" : "0, 0, 0");
+  const std::string upper =
+    (dim == 1 ? "2" : dim == 2 ? "2, 1.5" : "2, 1.5, 1");
+  const std::string blocks = (dim == 1 ? "5" : dim == 2 ? "5, 3" : "3, 2, 2");
+  Components<dim>   setup("set Dimension = " + std::to_string(dim) + R"(
+set Problem = custom
+subsection Mesh
+  set Cell type = )" + cell_type + R"(
+  set Lower corner = )" + corner + R"(
+  set Upper corner = )" + upper + R"(
+  set Subdivisions = )" + blocks + R"(
+end
+subsection Particles
+  set Particles per cell = 3
+end
+)");
+  // Nodal values of f(x) = 1 + sum_d (d + 2) x_d at the vertices.
+  const auto  &dofs = setup.shape_functions->dof_handler();
+  const auto  &partitioner = setup.system.partitioner();
+  std::vector<double> nodal(partitioner.locally_owned_size() +
+                            partitioner.n_ghost_indices());
+  Tensor<1, dim>      slope;
+  for (unsigned int d = 0; d < dim; ++d)
+    slope[d] = d + 2.;
+  std::vector<types::global_dof_index> indices(dofs.get_fe().n_dofs_per_cell());
+  for (const auto &cell : dofs.active_cell_iterators())
+    {
+      cell->get_dof_indices(indices);
+      for (unsigned int i = 0; i < indices.size(); ++i)
+        nodal[partitioner.global_to_local(indices[i])] =
+          1. + slope * cell->vertex(i);
+    }
+
+  ParticleShapeData<dim> data;
+  setup.shape_functions->evaluate(setup.points, partitioner, data);
+  double       max_error = 0;
+  unsigned int k         = 0;
+  for (const auto &particle : setup.points.particle_handler())
+    {
+      double         value = 0;
+      Tensor<1, dim> gradient;
+      for (unsigned int e = data.offsets[k]; e < data.offsets[k + 1]; ++e)
+        {
+          value += data.values[e] * nodal[data.indices[e]];
+          gradient += data.gradients[e] * nodal[data.indices[e]];
+        }
+      max_error = std::max(
+        max_error,
+        std::abs(value - 1. - slope * particle.get_location()) +
+          (gradient - slope).norm());
+      ++k;
+    }
+  check(max_error < 1e-12,
+        "linear function not reproduced: error " + std::to_string(max_error));
+  deallog << dim << "D " << cell_type << ": linear reproduction at "
+          << setup.points.n_global_points() << " points" << std::endl;
+}
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  initlog();
+  test_reference<1>(false);
+  test_reference<2>(false);
+  test_reference<3>(false);
+  test_reference<2>(true);
+  test_reference<3>(true);
+  test_reproduction<1>("hypercube");
+  test_reproduction<2>("hypercube");
+  test_reproduction<3>("hypercube");
+  test_reproduction<2>("simplex");
+  test_reproduction<3>("simplex");
+}

@@ -1,0 +1,119 @@
+// MPM steps on a two-cell 1D problem against values computed by hand, and
+// the consistent mass matrix reproducing a linear velocity field exactly.
+//
+// Cells [0, 1] and [1, 2], one point per cell at X = 0.5 and 1.5 with
+// V = m = 1, v(X) = X, E = 1, lumped mass, USL, dt = 0.1:
+//   nodal masses     (0.5, 1, 0.5)
+//   nodal momenta    (0.25, 1, 0.75)  ->  nodal velocities (0.5, 1, 1.5)
+//   forces 0 (no stress yet), so a = 0 and the points move by
+//   dt (0.75, 1.25); grad v = 0.5 in both, F = 1.05, sigma = E (F - 1) =
+//   0.05, V = 1.05.
+// Second step: f = -sum_p V_p sigma_p dphi_i/dx = (0.0525, 0, -0.0525).
+
+#include <mpm_otm/material_points/property_layout.h>
+
+#include "components.h"
+
+using namespace MpmOtm;
+using namespace MpmOtmTests;
+
+const std::string parameters = R"(
+set Dimension = 1
+set Problem = custom
+set Update scheme = USL
+set Mass matrix = lumped
+subsection Mesh
+  set Lower corner = 0
+  set Upper corner = 2
+  set Subdivisions = 2
+end
+subsection Particles
+  set Particles per cell = 1
+end
+subsection Material
+  set Young's modulus = 1
+  set Density = 1
+end
+subsection Custom problem
+  set Initial velocity = x
+end
+)";
+
+void
+expect(const std::string &what, const double computed, const double exact)
+{
+  check(std::abs(computed - exact) < 1e-13,
+        what + " = " + std::to_string(computed) + ", by hand " +
+          std::to_string(exact));
+  deallog << what << " = " << computed << std::endl;
+}
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  initlog();
+  using Layout = PropertyLayout<1>;
+  {
+    Components<1> setup(parameters);
+    auto         &system = setup.system;
+    const double  dt     = 0.1;
+    setup.stepper->advance(0., dt);
+    for (unsigned int i = 0; i < 3; ++i)
+      {
+        const double mass[3]     = {0.5, 1., 0.5};
+        const double momentum[3] = {0.25, 1., 0.75};
+        const double velocity[3] = {0.5, 1., 1.5};
+        expect("step 1 mass " + std::to_string(i),
+               system.lumped_mass.local_element(i),
+               mass[i]);
+        expect("step 1 momentum " + std::to_string(i),
+               system.momentum[0].local_element(i),
+               momentum[i]);
+        expect("step 1 force " + std::to_string(i),
+               system.force[0].local_element(i),
+               0.);
+        expect("step 1 velocity " + std::to_string(i),
+               system.velocity[0].local_element(i),
+               velocity[i]);
+      }
+    for (const auto &particle : setup.points.particle_handler())
+      {
+        const auto   properties = particle.get_properties();
+        const double X          = properties[Layout::initial_position];
+        const double moved      = (X < 1 ? 0.75 : 1.25) * dt;
+        expect("point " + std::to_string(X) + " position",
+               particle.get_location()[0],
+               X + moved);
+        expect("point " + std::to_string(X) + " stress",
+               properties[Layout::stress],
+               0.05);
+        expect("point " + std::to_string(X) + " volume",
+               properties[Layout::volume],
+               1.05);
+      }
+    setup.stepper->advance(dt, dt);
+    const double force[3] = {1.05 * 0.05, 0., -1.05 * 0.05};
+    for (unsigned int i = 0; i < 3; ++i)
+      expect("step 2 force " + std::to_string(i),
+             system.force[0].local_element(i),
+             force[i]);
+  }
+  {
+    // Four points per cell make the consistent mass matrix regular; the L2
+    // projection of the linear velocity v = x onto the linear functions is
+    // exact, so M^-1 q gives the nodal values 0, 1, 2.
+    Components<1> setup(parameters + R"(
+set Mass matrix = consistent
+subsection Particles
+  set Particles per cell = 4
+end
+)");
+    // No stress yet, so a = 0 and the USL velocities are M^-1 q.
+    setup.stepper->advance(0., 1e-3);
+    for (unsigned int i = 0; i < 3; ++i)
+      expect("consistent projection of v = x, node " + std::to_string(i),
+             setup.system.velocity[0].local_element(i),
+             1. * i);
+  }
+}
