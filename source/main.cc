@@ -31,7 +31,8 @@ int
 main(int argc, char *argv[])
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const bool root = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+  const bool                               root =
+    dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
   try
     {
       const std::string argument = (argc > 1) ? argv[1] : "";
@@ -46,7 +47,7 @@ main(int argc, char *argv[])
         }
       if (argument == "--print-parameters")
         {
-          const int dim = (argc > 2) ? std::atoi(argv[2]) : 2;
+          const int                dim = (argc > 2) ? std::atoi(argv[2]) : 2;
           dealii::ParameterHandler prm;
           if (dim == 1)
             MpmOtm::Simulator<1>::declare_parameters(prm);

@@ -85,8 +85,9 @@ namespace MpmOtmTests
     MpmOtm::Simulator<dim>::declare_parameters(prm);
     if (!name.empty())
       prm.parse_input(prm_file(name));
-    prm.parse_input_from_string(changes + "\nsubsection Output\n"
-                                          "set Directory = " +
+    prm.parse_input_from_string(changes +
+                                "\nsubsection Output\n"
+                                "set Directory = " +
                                 directory +
                                 "\nset Write VTU = false\n"
                                 "end\n");

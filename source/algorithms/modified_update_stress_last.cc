@@ -21,8 +21,11 @@ namespace MpmOtm
   {
     system.assemble_momentum(material_points, shape_data);
     for (unsigned int c = 0; c < dim; ++c)
-      mass_matrix.solve(
-        system, shape_data, system.momentum[c], system.velocity[c], c);
+      mass_matrix.solve(system,
+                        shape_data,
+                        system.momentum[c],
+                        system.velocity[c],
+                        c);
   }
 
 
@@ -32,7 +35,7 @@ namespace MpmOtm
   template class ModifiedUpdateStressLast<3>;
 } // namespace MpmOtm
 
-#define MPM_OTM_MUSL_DESCRIPTION                                            \
+#define MPM_OTM_MUSL_DESCRIPTION \
   "modified update stress last, thesis Sect. 2.4.3"
 MPM_OTM_REGISTER_PLUGIN(MpmOtm::NodalUpdate<1>,
                         MpmOtm::ModifiedUpdateStressLast<1>,

@@ -45,8 +45,11 @@ namespace MpmOtm
       TimerOutput::Scope scope(timer, "solve");
       for (unsigned int c = 0; c < dim; ++c)
         {
-          mass_matrix.solve(
-            system, data, system.force[c], system.acceleration[c], c);
+          mass_matrix.solve(system,
+                            data,
+                            system.force[c],
+                            system.acceleration[c],
+                            c);
           system.acceleration[c].update_ghost_values();
         }
     }
@@ -56,8 +59,11 @@ namespace MpmOtm
     }
     {
       TimerOutput::Scope scope(timer, "solve");
-      nodal_update.compute_nodal_velocities(
-        system, mass_matrix, material_points, data, dt);
+      nodal_update.compute_nodal_velocities(system,
+                                            mass_matrix,
+                                            material_points,
+                                            data,
+                                            dt);
       for (unsigned int c = 0; c < dim; ++c)
         system.velocity[c].update_ghost_values();
     }
@@ -146,10 +152,10 @@ namespace MpmOtm
         const Point<dim> location = particle.get_location() + displacement;
         particle.set_location(location);
 
-        const double check = sigma.norm() +
-                             Layout::get_vector(properties, Layout::velocity)
-                               .norm() +
-                             properties[Layout::volume];
+        const double check =
+          sigma.norm() +
+          Layout::get_vector(properties, Layout::velocity).norm() +
+          properties[Layout::volume];
         if (!std::isfinite(check) && bad_point == numbers::invalid_unsigned_int)
           {
             bad_point    = particle.get_id();
@@ -158,8 +164,7 @@ namespace MpmOtm
         ++k;
       }
 
-    const MPI_Comm communicator =
-      system.lumped_mass.get_mpi_communicator();
+    const MPI_Comm communicator = system.lumped_mass.get_mpi_communicator();
     if (Utilities::MPI::max(bad_point == numbers::invalid_unsigned_int ? 0 : 1,
                             communicator) > 0)
       {
@@ -167,8 +172,8 @@ namespace MpmOtm
         if (bad_point != numbers::invalid_unsigned_int)
           {
             std::ostringstream message;
-            message << "material point " << bad_point << " at ("
-                    << bad_location << ") has a non-finite velocity, stress "
+            message << "material point " << bad_point << " at (" << bad_location
+                    << ") has a non-finite velocity, stress "
                     << "or volume. ";
             text = message.str();
           }

@@ -13,16 +13,19 @@ namespace MpmOtm
   template <int dim>
   void
   UpdateStressLast<dim>::compute_nodal_velocities(
-    NodalSystem<dim>       &system,
-    const MassMatrix<dim>  &mass_matrix,
+    NodalSystem<dim>      &system,
+    const MassMatrix<dim> &mass_matrix,
     const MaterialPoints<dim> &,
     const ParticleShapeData<dim> &shape_data,
     const double                  dt) const
   {
     for (unsigned int c = 0; c < dim; ++c)
       {
-        mass_matrix.solve(
-          system, shape_data, system.momentum[c], system.velocity[c], c);
+        mass_matrix.solve(system,
+                          shape_data,
+                          system.momentum[c],
+                          system.velocity[c],
+                          c);
         system.velocity[c].add(dt, system.acceleration[c]);
       }
   }

@@ -1,11 +1,8 @@
 #include <deal.II/base/utilities.h>
-
 #include <deal.II/distributed/tria.h>
-
 #include <deal.II/fe/fe_simplex_p.h>
 #include <deal.II/fe/mapping_cartesian.h>
 #include <deal.II/fe/mapping_fe.h>
-
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_tools.h>
 
@@ -80,21 +77,21 @@ namespace MpmOtm
   {
     prm.enter_subsection("Mesh");
     simplex = (prm.get("Cell type") == "simplex");
-    const auto lower = per_direction(
-      Utilities::string_to_double(
-        Utilities::split_string_list(prm.get("Lower corner"))),
-      dim,
-      "Lower corner");
-    const auto upper = per_direction(
-      Utilities::string_to_double(
-        Utilities::split_string_list(prm.get("Upper corner"))),
-      dim,
-      "Upper corner");
-    const auto n = per_direction(Utilities::string_to_int(
-                                   Utilities::split_string_list(
-                                     prm.get("Subdivisions"))),
-                                 dim,
-                                 "Subdivisions");
+    const auto lower =
+      per_direction(Utilities::string_to_double(
+                      Utilities::split_string_list(prm.get("Lower corner"))),
+                    dim,
+                    "Lower corner");
+    const auto upper =
+      per_direction(Utilities::string_to_double(
+                      Utilities::split_string_list(prm.get("Upper corner"))),
+                    dim,
+                    "Upper corner");
+    const auto n =
+      per_direction(Utilities::string_to_int(
+                      Utilities::split_string_list(prm.get("Subdivisions"))),
+                    dim,
+                    "Subdivisions");
     prm.leave_subsection();
 
     Point<dim> p1, p2;
@@ -135,10 +132,11 @@ namespace MpmOtm
 
     if (!simplex)
       {
-        GridGenerator::subdivided_hyper_rectangle(*tria,
-                                                  blocks,
-                                                  bounding_box.get_boundary_points().first,
-                                                  bounding_box.get_boundary_points().second);
+        GridGenerator::subdivided_hyper_rectangle(
+          *tria,
+          blocks,
+          bounding_box.get_boundary_points().first,
+          bounding_box.get_boundary_points().second);
         map = std::make_unique<MappingCartesian<dim>>();
       }
     else
@@ -164,8 +162,8 @@ namespace MpmOtm
   {
     if constexpr (dim == 2)
       {
-        const Point<2> lower = bounding_box.get_boundary_points().first;
-        const Point<2> upper = bounding_box.get_boundary_points().second;
+        const Point<2>     lower = bounding_box.get_boundary_points().first;
+        const Point<2>     upper = bounding_box.get_boundary_points().second;
         const unsigned int nx = blocks[0], ny = blocks[1];
         const double       hx = (upper[0] - lower[0]) / nx;
         const double       hy = (upper[1] - lower[1]) / ny;

@@ -32,7 +32,7 @@ namespace MpmOtm
         // The excluded coefficients of src are zero (right-hand side and
         // initial guess are), so they do not couple to the others.
         src.update_ghost_values();
-        dst = 0.;
+        dst             = 0.;
         const double *x = src.get_values();
         double       *y = dst.get_values();
         for (unsigned int k = 0; k < particle_mass.size(); ++k)
@@ -79,8 +79,8 @@ namespace MpmOtm
         for (unsigned int i = 0; i < dst.locally_owned_size(); ++i)
           {
             const double m = lumped_mass.local_element(i);
-            dst.local_element(i) = (m > 0.) ? src.local_element(i) / m :
-                                              src.local_element(i);
+            dst.local_element(i) =
+              (m > 0.) ? src.local_element(i) / m : src.local_element(i);
           }
       }
 
@@ -118,11 +118,11 @@ namespace MpmOtm
     if (norm == 0.)
       return;
 
-    const ParticleMassOperator<dim> mass_operator(shape_data,
+    const ParticleMassOperator<dim>     mass_operator(shape_data,
                                                   system.particle_mass,
                                                   excluded);
     const LumpedMassPreconditioner<dim> preconditioner(system.lumped_mass);
-    SolverControl control(1000, 1e-13 * norm, false, false);
+    SolverControl        control(1000, 1e-13 * norm, false, false);
     SolverCG<VectorType> cg(control);
     try
       {
@@ -149,7 +149,7 @@ namespace MpmOtm
   template class ConsistentMassMatrix<3>;
 } // namespace MpmOtm
 
-#define MPM_OTM_CONSISTENT_DESCRIPTION                                      \
+#define MPM_OTM_CONSISTENT_DESCRIPTION \
   "consistent, solved with CG (journal Eq. 19)"
 MPM_OTM_REGISTER_PLUGIN(MpmOtm::MassMatrix<1>,
                         MpmOtm::ConsistentMassMatrix<1>,

@@ -102,23 +102,24 @@ namespace MpmOtm
 
         Tensor<1, dim> external;
         if (has_body_force)
-          external = m * problem.body_force(
-                           Point<dim>(Layout::get_vector(
-                             properties, Layout::initial_position)),
-                           time);
+          external =
+            m *
+            problem.body_force(Point<dim>(
+                                 Layout::get_vector(properties,
+                                                    Layout::initial_position)),
+                               time);
         if (properties[Layout::traction_measure] > 0.)
-          external +=
-            properties[Layout::traction_measure] *
-            traction[static_cast<unsigned int>(
-              properties[Layout::traction_boundary])];
+          external += properties[Layout::traction_measure] *
+                      traction[static_cast<unsigned int>(
+                        properties[Layout::traction_boundary])];
 
         for (unsigned int e = shape_data.offsets[k];
              e < shape_data.offsets[k + 1];
              ++e)
           {
-            const unsigned int    i     = shape_data.indices[e];
-            const double          phi   = shape_data.values[e];
-            const Tensor<1, dim> &grad  = shape_data.gradients[e];
+            const unsigned int    i          = shape_data.indices[e];
+            const double          phi        = shape_data.values[e];
+            const Tensor<1, dim> &grad       = shape_data.gradients[e];
             const Tensor<1, dim>  sigma_grad = sigma * grad;
             mass[i] += phi * m;
             for (unsigned int c = 0; c < dim; ++c)

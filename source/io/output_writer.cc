@@ -1,6 +1,5 @@
 #include <deal.II/base/data_out_base.h>
 #include <deal.II/base/utilities.h>
-
 #include <deal.II/numerics/data_out.h>
 
 #include <mpm_otm/grid_system/background_grid.h>
@@ -45,11 +44,11 @@ namespace MpmOtm
 
         for (const auto &particle : material_points.particle_handler())
           {
-            const auto properties = particle.get_properties();
+            const auto                 properties = particle.get_properties();
             DataOutBase::Patch<0, dim> patch;
             patch.vertices[0] = particle.get_location();
             patch.data.reinit(names.size(), 1);
-            unsigned int    n = 0;
+            unsigned int     n = 0;
             const Point<dim> X(
               Layout::get_vector(properties, Layout::initial_position));
             for (unsigned int d = 0; d < dim; ++d)
@@ -158,9 +157,9 @@ namespace MpmOtm
   template <int dim>
   void
   OutputWriter<dim>::initialize(const ParameterHandler &prm,
-                                const bool     has_displacement_error,
-                                const bool     has_stress_error,
-                                const MPI_Comm communicator)
+                                const bool              has_displacement_error,
+                                const bool              has_stress_error,
+                                const MPI_Comm          communicator)
   {
     mpi_communicator = communicator;
     if (Utilities::MPI::this_mpi_process(communicator) == 0)
@@ -238,8 +237,12 @@ namespace MpmOtm
     const MaterialPoints<dim> &material_points)
   {
     ParticlePatches<dim> patches(material_points);
-    const std::string    record = patches.write_vtu_with_pvtu_record(
-      output_directory + "/", "particles", step, mpi_communicator, 5);
+    const std::string    record =
+      patches.write_vtu_with_pvtu_record(output_directory + "/",
+                                         "particles",
+                                         step,
+                                         mpi_communicator,
+                                         5);
     particle_records.emplace_back(time, record);
     if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
       {
@@ -274,8 +277,12 @@ namespace MpmOtm
       value = grid.triangulation().locally_owned_subdomain();
     data_out.add_data_vector(subdomain, "subdomain");
     data_out.build_patches(grid.mapping());
-    const std::string record = data_out.write_vtu_with_pvtu_record(
-      output_directory + "/", "grid", step, mpi_communicator, 5);
+    const std::string record =
+      data_out.write_vtu_with_pvtu_record(output_directory + "/",
+                                          "grid",
+                                          step,
+                                          mpi_communicator,
+                                          5);
     grid_records.emplace_back(time, record);
     if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
       {
@@ -308,7 +315,7 @@ namespace MpmOtm
     std::vector<std::pair<types::particle_index, std::string>> rows;
     for (const auto &particle : material_points.particle_handler())
       {
-        const auto properties = particle.get_properties();
+        const auto       properties = particle.get_properties();
         const Point<dim> X(
           Layout::get_vector(properties, Layout::initial_position));
         const Point<dim>              x     = particle.get_location();

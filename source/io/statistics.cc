@@ -16,7 +16,7 @@ namespace MpmOtm
                            const Problem<dim>        &problem,
                            const double               time)
   {
-    using Layout = PropertyLayout<dim>;
+    using Layout           = PropertyLayout<dim>;
     has_displacement_error = problem.has_exact_solution();
     has_stress_error       = problem.has_exact_stress();
 
@@ -34,20 +34,19 @@ namespace MpmOtm
         const SymmetricTensor<2, dim> sigma = Layout::get_stress(properties);
 
         sums[0] += 0.5 * m * v.norm_square();
-        sums[1] += material.strain_energy(
-          Layout::get_deformation_gradient(properties),
-          sigma,
-          properties[Layout::initial_volume],
-          volume);
+        sums[1] +=
+          material.strain_energy(Layout::get_deformation_gradient(properties),
+                                 sigma,
+                                 properties[Layout::initial_volume],
+                                 volume);
         sums[2] += m;
         for (unsigned int d = 0; d < dim; ++d)
           sums[3 + d] += m * v[d];
         if (has_displacement_error)
           {
-            const double error =
-              ((particle.get_location() - X) -
-               problem.exact_displacement(X, time))
-                .norm_square();
+            const double error = ((particle.get_location() - X) -
+                                  problem.exact_displacement(X, time))
+                                   .norm_square();
             sums[6] += error;
             sums[7] += volume * error;
           }

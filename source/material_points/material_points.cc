@@ -1,5 +1,4 @@
 #include <deal.II/base/mpi.h>
-
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/grid_tools_cache.h>
 
@@ -22,7 +21,7 @@ namespace MpmOtm
     template <int dim>
     Point<dim>
     barycentric(const typename Triangulation<dim>::active_cell_iterator &cell,
-                const Point<dim> &point)
+                const Point<dim>                                        &point)
     {
       Tensor<2, dim> jacobian;
       for (unsigned int d = 0; d < dim; ++d)
@@ -58,24 +57,23 @@ namespace MpmOtm
                  const Point<dim>                                        &point,
                  const typename Triangulation<dim>::active_cell_iterator &hint)
     {
-      using Iterator = typename Triangulation<dim>::active_cell_iterator;
+      using Iterator      = typename Triangulation<dim>::active_cell_iterator;
       const auto try_cell = [&](const Iterator &cell, Point<dim> &xi) {
         xi = barycentric<dim>(cell, point);
         return inside_simplex(xi);
       };
-      const auto try_vertex_neighbours = [&](const Iterator &cell,
-                                             Iterator       &found,
-                                             Point<dim>     &xi) {
-        const auto &vertex_to_cells = cache.get_vertex_to_cell_map();
-        for (const unsigned int v : cell->vertex_indices())
-          for (const auto &neighbour : vertex_to_cells[cell->vertex_index(v)])
-            if (try_cell(neighbour, xi))
-              {
-                found = neighbour;
-                return true;
-              }
-        return false;
-      };
+      const auto try_vertex_neighbours =
+        [&](const Iterator &cell, Iterator &found, Point<dim> &xi) {
+          const auto &vertex_to_cells = cache.get_vertex_to_cell_map();
+          for (const unsigned int v : cell->vertex_indices())
+            for (const auto &neighbour : vertex_to_cells[cell->vertex_index(v)])
+              if (try_cell(neighbour, xi))
+                {
+                  found = neighbour;
+                  return true;
+                }
+          return false;
+        };
 
       Point<dim> xi;
       Iterator   found;
@@ -94,8 +92,7 @@ namespace MpmOtm
           if (try_vertex_neighbours(guess.first, found, xi))
             return {found, xi};
         }
-      for (const auto &cell :
-           cache.get_triangulation().active_cell_iterators())
+      for (const auto &cell : cache.get_triangulation().active_cell_iterators())
         if (try_cell(cell, xi))
           return {cell, xi};
       return {Iterator(), xi};
@@ -142,7 +139,8 @@ namespace MpmOtm
     prm.leave_subsection();
     AssertThrow(values.size() == 1 || values.size() == dim,
                 ExcMessage("Particles/Particles per cell needs one value or " +
-                           std::to_string(dim) + " values (one per direction)."));
+                           std::to_string(dim) +
+                           " values (one per direction)."));
     n_per_direction.assign(dim, values[0]);
     if (values.size() == dim)
       n_per_direction.assign(values.begin(), values.end());
@@ -158,15 +156,18 @@ namespace MpmOtm
   {
     grid      = &background;
     particles = std::make_unique<Particles::ParticleHandler<dim>>(
-      grid->triangulation(), grid->mapping(), PropertyLayout<dim>::n_properties);
+      grid->triangulation(),
+      grid->mapping(),
+      PropertyLayout<dim>::n_properties);
     particles->signals.particle_lost.connect(
       [this](const typename Particles::ParticleIterator<dim> &particle,
              const typename Triangulation<dim>::active_cell_iterator &) {
         lost_points.emplace_back(particle->get_id(), particle->get_location());
       });
     if (grid->is_simplex())
-      cache = std::make_unique<GridTools::Cache<dim, dim>>(
-        grid->triangulation(), grid->mapping());
+      cache =
+        std::make_unique<GridTools::Cache<dim, dim>>(grid->triangulation(),
+                                                     grid->mapping());
 
     const BoundingBox<dim> region = problem.material_region();
     const Point<dim>       lower  = grid->box().get_boundary_points().first;
@@ -175,8 +176,8 @@ namespace MpmOtm
     const auto block_is_material = [&](const std::vector<unsigned int> &b) {
       Point<dim> centre;
       for (unsigned int d = 0; d < dim; ++d)
-        centre[d] = lower[d] + (b[d] + 0.5) * grid->box().side_length(d) /
-                                 blocks[d];
+        centre[d] =
+          lower[d] + (b[d] + 0.5) * grid->box().side_length(d) / blocks[d];
       return region.point_inside(centre);
     };
 
@@ -198,7 +199,9 @@ namespace MpmOtm
     else
       {
         const unsigned int n_blocks =
-          std::accumulate(blocks.begin(), blocks.end(), 1u,
+          std::accumulate(blocks.begin(),
+                          blocks.end(),
+                          1u,
                           std::multiplies<unsigned int>());
         for (unsigned int linear = 0; linear < n_blocks; ++linear)
           {
@@ -227,23 +230,23 @@ namespace MpmOtm
     const std::vector<unsigned int>                         &block,
     const typename Triangulation<dim>::active_cell_iterator &block_cell,
     const Material<dim>                                     &material,
-    const Problem<dim>              &problem)
+    const Problem<dim>                                      &problem)
   {
-    using Layout           = PropertyLayout<dim>;
-    const auto &blocks     = grid->subdivisions();
-    const auto  grid_lower = grid->box().get_boundary_points().first;
-    const auto  region     = problem.material_region();
+    using Layout             = PropertyLayout<dim>;
+    const auto &blocks       = grid->subdivisions();
+    const auto  grid_lower   = grid->box().get_boundary_points().first;
+    const auto  region       = problem.material_region();
     const auto  traction_ids = problem.traction_boundaries();
 
-    unsigned int points_per_block = 1;
-    double       block_volume     = 1;
-    unsigned int block_index      = 0;
-    Point<dim>   block_lower;
+    unsigned int   points_per_block = 1;
+    double         block_volume     = 1;
+    unsigned int   block_index      = 0;
+    Point<dim>     block_lower;
     Tensor<1, dim> block_size;
     for (int d = dim - 1; d >= 0; --d)
       {
         points_per_block *= n_per_direction[d];
-        block_size[d]  = grid->box().side_length(d) / blocks[d];
+        block_size[d] = grid->box().side_length(d) / blocks[d];
         block_volume *= block_size[d];
         block_lower[d] = grid_lower[d] + block[d] * block_size[d];
         block_index    = block_index * blocks[d] + block[d];
@@ -258,7 +261,8 @@ namespace MpmOtm
         unsigned int rest = local;
         for (unsigned int d = 0; d < dim; ++d)
           {
-            reference[d] = (rest % n_per_direction[d] + 0.5) / n_per_direction[d];
+            reference[d] =
+              (rest % n_per_direction[d] + 0.5) / n_per_direction[d];
             rest /= n_per_direction[d];
           }
         Point<dim> X;
@@ -285,8 +289,8 @@ namespace MpmOtm
         const Tensor<1, dim> v0            = problem.initial_velocity(X);
         for (unsigned int d = 0; d < dim; ++d)
           {
-            properties[Layout::initial_position + d]           = X[d];
-            properties[Layout::velocity + d]                   = v0[d];
+            properties[Layout::initial_position + d]               = X[d];
+            properties[Layout::velocity + d]                       = v0[d];
             properties[Layout::deformation_gradient + d * dim + d] = 1.;
           }
         // Boundary particles (thesis Sect. 2.4.1): the outermost layer next
@@ -306,14 +310,13 @@ namespace MpmOtm
               }
           }
 
-        particles->insert_particle(X,
-                                   reference,
-                                   static_cast<types::particle_index>(
-                                     block_index) *
-                                       points_per_block +
-                                     local,
-                                   cell,
-                                   ArrayView<const double>(properties));
+        particles->insert_particle(
+          X,
+          reference,
+          static_cast<types::particle_index>(block_index) * points_per_block +
+            local,
+          cell,
+          ArrayView<const double>(properties));
       }
   }
 
@@ -335,7 +338,8 @@ namespace MpmOtm
         for (const auto &[id, location] : lost_points)
           message << "material point " << id << " at (" << location
                   << ") left the background grid. ";
-        const auto all = Utilities::MPI::all_gather(communicator(), message.str());
+        const auto all =
+          Utilities::MPI::all_gather(communicator(), message.str());
         std::string text;
         for (const auto &part : all)
           text += part;
@@ -362,8 +366,9 @@ namespace MpmOtm
       typename Triangulation<dim>::active_cell_iterator cell;
       std::vector<double>                               properties;
     };
-    std::vector<Moved>                                            moved;
-    std::vector<typename Particles::ParticleHandler<dim>::particle_iterator> to_remove;
+    std::vector<Moved> moved;
+    std::vector<typename Particles::ParticleHandler<dim>::particle_iterator>
+      to_remove;
 
     for (auto particle = particles->begin(); particle != particles->end();
          ++particle)
@@ -383,12 +388,12 @@ namespace MpmOtm
             continue;
           }
         const auto properties = particle->get_properties();
-        moved.push_back({location,
-                         found.second,
-                         particle->get_id(),
-                         found.first,
-                         std::vector<double>(properties.begin(),
-                                             properties.end())});
+        moved.push_back(
+          {location,
+           found.second,
+           particle->get_id(),
+           found.first,
+           std::vector<double>(properties.begin(), properties.end())});
         to_remove.push_back(particle);
       }
     if (to_remove.empty())

@@ -23,15 +23,15 @@ namespace MpmOtm
       dt * symmetrize(velocity_gradient);
     const Tensor<2, dim> spin_increment =
       0.5 * dt * (velocity_gradient - transpose(velocity_gradient));
-    const double volumetric_increment = trace(strain_increment);
+    const double         volumetric_increment = trace(strain_increment);
     const Tensor<2, dim> old_stress(stress);
     const Tensor<2, dim> rotation =
       spin_increment * old_stress - old_stress * spin_increment;
-    stress += this->lambda_lame * volumetric_increment *
-                unit_symmetric_tensor<dim>() +
-              2. * this->mu_lame * strain_increment -
-              volumetric_increment * SymmetricTensor<2, dim>(stress) +
-              symmetrize(rotation);
+    stress +=
+      this->lambda_lame * volumetric_increment * unit_symmetric_tensor<dim>() +
+      2. * this->mu_lame * strain_increment -
+      volumetric_increment * SymmetricTensor<2, dim>(stress) +
+      symmetrize(rotation);
   }
 
 
@@ -45,8 +45,8 @@ namespace MpmOtm
   {
     // Complementary energy 1/2 sigma : D^-1 : sigma of the current stress;
     // D^-1 sigma = (sigma - lambda / (dim lambda + 2 mu) tr(sigma) I) / 2 mu.
-    const double lambda = this->lambda_lame;
-    const double mu     = this->mu_lame;
+    const double                  lambda = this->lambda_lame;
+    const double                  mu     = this->mu_lame;
     const SymmetricTensor<2, dim> elastic_strain =
       (stress - lambda / (dim * lambda + 2. * mu) * trace(stress) *
                   unit_symmetric_tensor<dim>()) /

@@ -19,7 +19,8 @@ namespace MpmOtm
                         "Constitutive model:" + model_documentation);
       prm.declare_entry("Young's modulus",
                         "4e3",
-                        Patterns::Double(0., Patterns::Double::max_double_value),
+                        Patterns::Double(0.,
+                                         Patterns::Double::max_double_value),
                         "Young's modulus E (Pa), positive.");
       prm.declare_entry("Poisson's ratio",
                         "0",
@@ -27,7 +28,8 @@ namespace MpmOtm
                         "Poisson's ratio nu, in (-1, 0.5).");
       prm.declare_entry("Density",
                         "1",
-                        Patterns::Double(0., Patterns::Double::max_double_value),
+                        Patterns::Double(0.,
+                                         Patterns::Double::max_double_value),
                         "Initial mass density rho (kg/m^dim), positive.");
     }
     prm.leave_subsection();

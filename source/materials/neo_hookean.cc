@@ -19,13 +19,12 @@ namespace MpmOtm
                                  const double,
                                  SymmetricTensor<2, dim> &stress) const
   {
-    const double J = determinant(F);
+    const double                  J = determinant(F);
     const SymmetricTensor<2, dim> left_cauchy_green =
       symmetrize(F * transpose(F));
-    stress = (this->lambda_lame * std::log(J) / J) *
-               unit_symmetric_tensor<dim>() +
-             (this->mu_lame / J) *
-               (left_cauchy_green - unit_symmetric_tensor<dim>());
+    stress =
+      (this->lambda_lame * std::log(J) / J) * unit_symmetric_tensor<dim>() +
+      (this->mu_lame / J) * (left_cauchy_green - unit_symmetric_tensor<dim>());
   }
 
 
@@ -37,8 +36,8 @@ namespace MpmOtm
                                  const double initial_volume,
                                  const double) const
   {
-    const double J     = determinant(F);
-    const double log_J = std::log(J);
+    const double J       = determinant(F);
+    const double log_J   = std::log(J);
     const double trace_C = trace(symmetrize(transpose(F) * F));
     return initial_volume *
            (0.5 * this->mu_lame * (trace_C - dim) - this->mu_lame * log_J +

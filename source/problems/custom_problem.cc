@@ -23,9 +23,9 @@ namespace MpmOtm
         {
           AssertThrow(false,
                       ExcMessage("Custom problem/" + entry + ": <" +
-                                 expressions +
-                                 "> is not a list of " + std::to_string(dim) +
-                                 " expressions in " + variables[dim - 1] +
+                                 expressions + "> is not a list of " +
+                                 std::to_string(dim) + " expressions in " +
+                                 variables[dim - 1] +
                                  " separated by ';': " + error.what()));
         }
       return function;
@@ -108,10 +108,10 @@ namespace MpmOtm
   CustomProblem<dim>::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Custom problem");
-    velocity = make_function<dim>(prm.get("Initial velocity"),
-                                  "Initial velocity");
-    force    = make_function<dim>(prm.get("Body force"), "Body force");
-    fixed    = this->parse_fixed_components(prm.get("Fixed components"),
+    velocity =
+      make_function<dim>(prm.get("Initial velocity"), "Initial velocity");
+    force = make_function<dim>(prm.get("Body force"), "Body force");
+    fixed = this->parse_fixed_components(prm.get("Fixed components"),
                                          "Custom problem/Fixed components");
     for (const int id : Utilities::string_to_int(
            Utilities::split_string_list(prm.get("Traction boundary ids"))))
@@ -123,11 +123,11 @@ namespace MpmOtm
         traction_ids.push_back(id);
       }
     traction_function = make_function<dim>(prm.get("Traction"), "Traction");
-    region_lower = prm.get("Material lower corner");
-    region_upper = prm.get("Material upper corner");
+    region_lower      = prm.get("Material lower corner");
+    region_upper      = prm.get("Material upper corner");
     if (!prm.get("Exact displacement").empty())
-      displacement = make_function<dim>(prm.get("Exact displacement"),
-                                        "Exact displacement");
+      displacement =
+        make_function<dim>(prm.get("Exact displacement"), "Exact displacement");
     prm.leave_subsection();
   }
 
@@ -259,7 +259,7 @@ namespace MpmOtm
   template class CustomProblem<3>;
 } // namespace MpmOtm
 
-#define MPM_OTM_CUSTOM_DESCRIPTION                                           \
+#define MPM_OTM_CUSTOM_DESCRIPTION \
   "conditions given as expressions in subsection 'Custom problem'"
 MPM_OTM_REGISTER_PLUGIN(MpmOtm::Problem<1>,
                         MpmOtm::CustomProblem<1>,

@@ -103,14 +103,14 @@ namespace MpmOtm
     Tensor<1, dim> b;
     for (unsigned int d = 0; d < dim; ++d)
       {
-        const double s = std::sin(2. * numbers::PI * X[d]) *
-                         std::sin(phase(d, c, time));
-        const double acceleration = -amplitude * std::pow(c * numbers::PI, 2) * s;
+        const double s =
+          std::sin(2. * numbers::PI * X[d]) * std::sin(phase(d, c, time));
+        const double acceleration =
+          -amplitude * std::pow(c * numbers::PI, 2) * s;
         const double dF_dX = -4. * numbers::PI * numbers::PI * amplitude * s;
-        b[d] = acceleration -
-               dF_dX / rho *
-                 (lambda * (1. - std::log(J)) / (F[d] * F[d]) +
-                  mu * (1. + 1. / (F[d] * F[d])));
+        b[d]               = acceleration - dF_dX / rho *
+                                (lambda * (1. - std::log(J)) / (F[d] * F[d]) +
+                                 mu * (1. + 1. / (F[d] * F[d])));
       }
     return b;
   }

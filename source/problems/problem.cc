@@ -102,7 +102,7 @@ namespace MpmOtm
   Problem<dim>::parse_fixed_components(const std::string &text,
                                        const std::string &entry)
   {
-    const std::string names = std::string("xyz").substr(0, dim);
+    const std::string                 names = std::string("xyz").substr(0, dim);
     std::vector<FixedComponents<dim>> result;
     for (const auto &item : Utilities::split_string_list(text, ';'))
       {
@@ -122,8 +122,7 @@ namespace MpmOtm
         for (const auto &component : Utilities::split_string_list(parts[1]))
           {
             const auto position = names.find(component);
-            AssertThrow(component.size() == 1 &&
-                          position != std::string::npos,
+            AssertThrow(component.size() == 1 && position != std::string::npos,
                         ExcMessage(entry + ": component <" + component +
                                    "> must be one of " + names + "."));
             fixed.fixed[position] = true;

@@ -160,7 +160,7 @@ namespace MpmOtm
   template class SoilColumn<3>;
 } // namespace MpmOtm
 
-#define MPM_OTM_SOIL_COLUMN_DESCRIPTION                                      \
+#define MPM_OTM_SOIL_COLUMN_DESCRIPTION \
   "column under self-weight, fixed bottom, free top (B6)"
 MPM_OTM_REGISTER_PLUGIN(MpmOtm::Problem<1>,
                         MpmOtm::SoilColumn<1>,

@@ -39,11 +39,11 @@ namespace MpmOtm
                                 const BoundingBox<dim> &box)
   {
     Problem<dim>::initialize(material, box);
-    x0               = box.get_boundary_points().first[0];
-    length           = box.side_length(0);
-    const double c   = material.wave_speed();
-    omega            = numbers::PI * c / length;
-    impedance        = material.density() * c;
+    x0             = box.get_boundary_points().first[0];
+    length         = box.side_length(0);
+    const double c = material.wave_speed();
+    omega          = numbers::PI * c / length;
+    impedance      = material.density() * c;
   }
 
 
@@ -116,7 +116,7 @@ namespace MpmOtm
   template class VibratingBar<3>;
 } // namespace MpmOtm
 
-#define MPM_OTM_VIBRATING_BAR_DESCRIPTION                                    \
+#define MPM_OTM_VIBRATING_BAR_DESCRIPTION \
   "bar with fixed ends and initial velocity v0 sin(pi X/L) (B1, B5)"
 MPM_OTM_REGISTER_PLUGIN(MpmOtm::Problem<1>,
                         MpmOtm::VibratingBar<1>,

@@ -1,8 +1,6 @@
 #include <deal.II/dofs/dof_tools.h>
-
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_simplex_p.h>
-
 #include <deal.II/particles/particle_handler.h>
 
 #include <mpm_otm/base/plugins.h>
@@ -56,7 +54,7 @@ namespace MpmOtm
         for (unsigned int d = 0; d < dim; ++d)
           {
             values[0] -= xi[d];
-            values[d + 1] = xi[d];
+            values[d + 1]             = xi[d];
             reference_gradients[0][d] = -1.;
             for (unsigned int e = 0; e < dim; ++e)
               reference_gradients[d + 1][e] = (d == e ? 1. : 0.);
@@ -95,11 +93,11 @@ namespace MpmOtm
 
   template <int dim>
   void
-  LinearLagrange<dim>::evaluate(const MaterialPoints<dim>         &material_points,
+  LinearLagrange<dim>::evaluate(const MaterialPoints<dim> &material_points,
                                 const Utilities::MPI::Partitioner &partitioner,
                                 ParticleShapeData<dim>            &data) const
   {
-    const auto        &particles = material_points.particle_handler();
+    const auto        &particles   = material_points.particle_handler();
     const unsigned int n_functions = fe->n_dofs_per_cell();
     const unsigned int n_particles = particles.n_locally_owned_particles();
 
@@ -122,7 +120,10 @@ namespace MpmOtm
           {
             current_cell = cell;
             typename DoFHandler<dim>::active_cell_iterator dof_cell(
-              &cell->get_triangulation(), cell->level(), cell->index(), &dofs);
+              &cell->get_triangulation(),
+              cell->level(),
+              cell->index(),
+              &dofs);
             dof_cell->get_dof_indices(dof_indices);
             for (unsigned int i = 0; i < n_functions; ++i)
               {
@@ -133,7 +134,7 @@ namespace MpmOtm
 
         const unsigned int offset = k * n_functions;
         data.offsets[k]           = offset;
-        double        *values     = &data.values[offset];
+        double         *values    = &data.values[offset];
         Tensor<1, dim> *gradients = &data.gradients[offset];
         reference_values(simplex,
                          particle.get_reference_location(),
@@ -150,7 +151,7 @@ namespace MpmOtm
         for (unsigned int i = 0; i < n_functions; ++i)
           {
             data.indices[offset + i] = local_indices[i];
-            gradients[i]             = inverse_transpose * reference_gradients[i];
+            gradients[i] = inverse_transpose * reference_gradients[i];
           }
         ++k;
       }

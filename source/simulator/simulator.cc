@@ -84,7 +84,8 @@ namespace MpmOtm
                       "Space dimension: 1, 2 or 3.");
     prm.declare_entry("Problem",
                       "vibrating bar",
-                      Patterns::Selection(PluginRegistry<Problem<dim>>::selection()),
+                      Patterns::Selection(
+                        PluginRegistry<Problem<dim>>::selection()),
                       "Benchmark or user problem:" +
                         PluginRegistry<Problem<dim>>::documentation());
     prm.declare_entry("Method",
@@ -92,12 +93,11 @@ namespace MpmOtm
                       Patterns::Selection("MPM"),
                       "MPM: material-point method, shape functions on the "
                       "fixed background grid (journal Alg. 1).");
-    prm.declare_entry("Update scheme",
-                      "USL",
-                      Patterns::Selection(
-                        PluginRegistry<NodalUpdate<dim>>::selection()),
-                      "Nodal update:" +
-                        PluginRegistry<NodalUpdate<dim>>::documentation());
+    prm.declare_entry(
+      "Update scheme",
+      "USL",
+      Patterns::Selection(PluginRegistry<NodalUpdate<dim>>::selection()),
+      "Nodal update:" + PluginRegistry<NodalUpdate<dim>>::documentation());
     prm.declare_entry("Shape functions",
                       "linear",
                       Patterns::Selection(
@@ -166,8 +166,7 @@ namespace MpmOtm
     end_time  = prm.get_double("End time");
     time_step = prm.get_double("Time step");
     prm.leave_subsection();
-    AssertThrow(time_step > 0,
-                ExcMessage("Time/Time step must be positive."));
+    AssertThrow(time_step > 0, ExcMessage("Time/Time step must be positive."));
 
     grid = std::make_unique<BackgroundGrid<dim>>();
     grid->parse_parameters(prm);
@@ -229,7 +228,7 @@ namespace MpmOtm
   Statistics<dim>
   Simulator<dim>::run(const std::function<void(unsigned int)> &observer)
   {
-    TimerOutput timer(communicator,
+    TimerOutput      timer(communicator,
                       pcout,
                       TimerOutput::summary,
                       TimerOutput::wall_times);
@@ -244,12 +243,15 @@ namespace MpmOtm
 
     const unsigned int n_steps =
       static_cast<unsigned int>(std::ceil(end_time / time_step - 1e-8));
-    Timer              wall_clock(communicator, true);
-    Statistics<dim>    statistics;
+    Timer           wall_clock(communicator, true);
+    Statistics<dim> statistics;
 
     const auto report = [&](const unsigned int step) {
       TimerOutput::Scope scope(timer, "output");
-      statistics.compute(*points, *material, *problem_description, current_time);
+      statistics.compute(*points,
+                         *material,
+                         *problem_description,
+                         current_time);
       output->write(step,
                     current_time,
                     *points,
@@ -261,8 +263,7 @@ namespace MpmOtm
             << std::setprecision(4) << current_time
             << "  kinetic energy = " << statistics.kinetic_energy
             << "  wall time = " << std::fixed << std::setprecision(2)
-            << wall_clock.wall_time() << " s" << std::defaultfloat
-            << std::endl;
+            << wall_clock.wall_time() << " s" << std::defaultfloat << std::endl;
       if (observer)
         observer(step);
     };
@@ -278,8 +279,8 @@ namespace MpmOtm
         catch (const std::exception &error)
           {
             std::ostringstream message;
-            message << "Stopped in time step " << step << " (t = "
-                    << current_time << " to " << current_time + dt
+            message << "Stopped in time step " << step
+                    << " (t = " << current_time << " to " << current_time + dt
                     << "); the output up to the last output step is in <"
                     << output->directory() << ">. " << message_of(error);
             AssertThrow(false, ExcMessage(message.str()));

@@ -1,7 +1,7 @@
-// B1b (journal Sect. 8.1, Fig. 6, MPM-P1 curve) from prm/B1b-bar-fixed-ends.prm:
-// RMS displacement error at T against the exact solution for 8, ..., 512
-// nodes. Published behaviour: second order on coarse grids, loss of
-// convergence on fine grids because of grid crossing.
+// B1b (journal Sect. 8.1, Fig. 6, MPM-P1 curve) from
+// prm/B1b-bar-fixed-ends.prm: RMS displacement error at T against the exact
+// solution for 8, ..., 512 nodes. Published behaviour: second order on coarse
+// grids, loss of convergence on fine grids because of grid crossing.
 
 #include "../tests.h"
 
@@ -26,8 +26,7 @@ main(int argc, char **argv)
       deallog << nodes << " nodes: RMS displacement error "
               << rounded(statistics.displacement_rms_error, 2);
       if (errors.size() > 1)
-        deallog << ", rate "
-                << std::fixed << std::setprecision(1)
+        deallog << ", rate " << std::fixed << std::setprecision(1)
                 << std::log2(errors[errors.size() - 2] / errors.back())
                 << std::defaultfloat;
       deallog << std::endl;

@@ -20,9 +20,9 @@ main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   initlog();
-  auto simulator = make_simulator<2>("B3-plate-manufactured.prm",
+  auto       simulator  = make_simulator<2>("B3-plate-manufactured.prm",
                                      "subsection Output\n set Interval = 0\n"
-                                     "end",
+                                            "end",
                                      "output-B3");
   const auto statistics = simulator->run();
   check(std::abs(simulator->time() - 3.5e-3) < 1e-15, "did not reach T");
@@ -46,8 +46,8 @@ main(int argc, char **argv)
         continue;
       const Point<2> X(values[1], values[2]);
       const double   exact = simulator->problem().exact_stress(X, 3.5e-3)[0][0];
-      worst   = std::max(worst, std::abs(values[9] - exact));
-      largest = std::max(largest, std::abs(exact));
+      worst                = std::max(worst, std::abs(values[9] - exact));
+      largest              = std::max(largest, std::abs(exact));
       ++n_row;
     }
   check(n_row == 128, "the profile row should hold 128 particles");

@@ -22,11 +22,11 @@ main(int argc, char **argv)
   std::vector<double> errors;
   for (unsigned int i = 0; i < 3; ++i)
     {
-      auto simulator = make_simulator<2>(
-        "B5-bar-2d-small.prm",
-        "subsection Mesh\n set Subdivisions = " + std::to_string(n_x[i] - 1) +
-          ", 1\nend",
-        "output-" + std::to_string(n_x[i]));
+      auto simulator =
+        make_simulator<2>("B5-bar-2d-small.prm",
+                          "subsection Mesh\n set Subdivisions = " +
+                            std::to_string(n_x[i] - 1) + ", 1\nend",
+                          "output-" + std::to_string(n_x[i]));
       const auto   statistics = simulator->run();
       const double error      = statistics.displacement_l2_error;
       errors.push_back(error);

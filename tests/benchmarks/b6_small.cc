@@ -16,30 +16,30 @@ main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   initlog();
-  auto simulator = make_simulator<2>(
-    "B6-soil-column-small.prm",
-    "subsection Output\n set Write particle CSV = false\nend",
-    "output-B6");
+  auto simulator =
+    make_simulator<2>("B6-soil-column-small.prm",
+                      "subsection Output\n set Write particle CSV = false\nend",
+                      "output-B6");
   using Layout = PropertyLayout<2>;
 
   // Initial height of the top row: the largest X2.
   double top = 0;
   for (const auto &particle : simulator->material_points().particle_handler())
-    top = std::max(top,
-                   particle.get_properties()[Layout::initial_position + 1]);
+    top =
+      std::max(top, particle.get_properties()[Layout::initial_position + 1]);
 
   double max_error = 0, max_exact = 0;
   simulator->run([&](const unsigned int step) {
     const double t   = simulator->time();
     double       sum = 0, exact = 0;
-    unsigned int n   = 0;
-    for (const auto &particle :
-         simulator->material_points().particle_handler())
+    unsigned int n = 0;
+    for (const auto &particle : simulator->material_points().particle_handler())
       {
         const auto properties = particle.get_properties();
         if (properties[Layout::initial_position + 1] < top - 1e-12)
           continue;
-        const Point<2> X(Layout::get_vector(properties, Layout::initial_position));
+        const Point<2> X(
+          Layout::get_vector(properties, Layout::initial_position));
         sum += particle.get_location()[1] - X[1];
         exact = simulator->problem().exact_displacement(X, t)[1];
         ++n;
@@ -49,14 +49,14 @@ main(int argc, char **argv)
     max_exact      = std::max(max_exact, std::abs(exact));
     if (step % 500 == 0)
       deallog << "t = " << std::fixed << std::setprecision(2) << t
-              << std::defaultfloat << ": top displacement "
-              << rounded(u, 2) << ", exact " << rounded(exact, 2)
-              << std::endl;
+              << std::defaultfloat << ": top displacement " << rounded(u, 2)
+              << ", exact " << rounded(exact, 2) << std::endl;
   });
   const double relative = max_error / max_exact;
   check(relative < 0.05,
         "top displacement more than 5 % of its maximum from the exact "
-        "solution: " + std::to_string(relative));
+        "solution: " +
+          std::to_string(relative));
   deallog << "largest deviation below 5 % of the largest displacement"
           << std::endl;
 }

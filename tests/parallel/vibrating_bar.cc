@@ -13,16 +13,18 @@ template <int dim>
 void
 compare(const std::string &label, const std::string &changes)
 {
-  const MPI_Comm world = MPI_COMM_WORLD;
-  auto parallel_run    = make_simulator<dim>("", changes, "output-" + label);
-  const auto parallel  = parallel_run->run();
+  const MPI_Comm world    = MPI_COMM_WORLD;
+  auto       parallel_run = make_simulator<dim>("", changes, "output-" + label);
+  const auto parallel     = parallel_run->run();
 
   Statistics<dim> serial;
   if (Utilities::MPI::this_mpi_process(world) == 0)
     {
-      auto serial_run = make_simulator<dim>(
-        "", changes, "output-" + label + "-serial", MPI_COMM_SELF);
-      serial = serial_run->run();
+      auto serial_run = make_simulator<dim>("",
+                                            changes,
+                                            "output-" + label + "-serial",
+                                            MPI_COMM_SELF);
+      serial          = serial_run->run();
     }
   const double serial_values[3] = {serial.displacement_l2_error,
                                    serial.kinetic_energy,

@@ -38,7 +38,8 @@ struct Components
     update = PluginRegistry<NodalUpdate<dim>>::create(prm.get("Update scheme"));
     shape_functions =
       PluginRegistry<ShapeFunctions<dim>>::create(prm.get("Shape functions"));
-    mass_matrix = PluginRegistry<MassMatrix<dim>>::create(prm.get("Mass matrix"));
+    mass_matrix =
+      PluginRegistry<MassMatrix<dim>>::create(prm.get("Mass matrix"));
     prm.enter_subsection("Material");
     material = PluginRegistry<Material<dim>>::create(prm.get("Model"));
     prm.leave_subsection();

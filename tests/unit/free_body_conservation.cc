@@ -23,10 +23,12 @@ main(int argc, char **argv)
           Components<2> setup(R"(
 set Dimension = 2
 set Problem = custom
-set Update scheme = )" + scheme + R"(
+set Update scheme = )" + scheme +
+                              R"(
 set Mass matrix = )" + mass + R"(
 subsection Mesh
-  set Cell type = )" + cell_type + R"(
+  set Cell type = )" + cell_type +
+                              R"(
   set Lower corner = 0, 0
   set Upper corner = 4, 4
   set Subdivisions = 8, 8

@@ -4,7 +4,6 @@
 // hexahedra, triangles, tetrahedra).
 
 #include <deal.II/base/partitioner.h>
-
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_simplex_p.h>
 
@@ -26,10 +25,10 @@ test_reference(const bool simplex)
     fe = std::make_unique<FE_SimplexP<dim>>(1);
   else
     fe = std::make_unique<FE_Q<dim>>(1);
-  const unsigned int n = fe->n_dofs_per_cell();
-  std::mt19937       random(42);
+  const unsigned int                     n = fe->n_dofs_per_cell();
+  std::mt19937                           random(42);
   std::uniform_real_distribution<double> uniform(0., 1.);
-  double max_error = 0;
+  double                                 max_error = 0;
   for (unsigned int trial = 0; trial < 100; ++trial)
     {
       Point<dim> xi;
@@ -41,16 +40,18 @@ test_reference(const bool simplex)
         }
       std::vector<double>         values(n);
       std::vector<Tensor<1, dim>> gradients(n);
-      LinearLagrange<dim>::reference_values(
-        simplex, xi, values.data(), gradients.data());
+      LinearLagrange<dim>::reference_values(simplex,
+                                            xi,
+                                            values.data(),
+                                            gradients.data());
       double         unity = 0;
       Tensor<1, dim> gradient_sum;
       for (unsigned int i = 0; i < n; ++i)
         {
-          max_error = std::max(max_error,
-                               std::abs(values[i] - fe->shape_value(i, xi)));
-          max_error = std::max(
-            max_error, (gradients[i] - fe->shape_grad(i, xi)).norm());
+          max_error =
+            std::max(max_error, std::abs(values[i] - fe->shape_value(i, xi)));
+          max_error =
+            std::max(max_error, (gradients[i] - fe->shape_grad(i, xi)).norm());
           unity += values[i];
           gradient_sum += gradients[i];
           check(values[i] >= -1e-15, "negative linear function");
@@ -69,24 +70,29 @@ void
 test_reproduction(const std::string &cell_type)
 {
   const std::string corner = (dim == 1 ? "0" : dim == 2 ? "0, 0" : "0, 0, 0");
-  const std::string upper =
-    (dim == 1 ? "2" : dim == 2 ? "2, 1.5" : "2, 1.5, 1");
+  const std::string upper  = (dim == 1 ? "2" :
+                              dim == 2 ? "2, 1.5" :
+                                         "2, 1.5, 1");
   const std::string blocks = (dim == 1 ? "5" : dim == 2 ? "5, 3" : "3, 2, 2");
-  Components<dim>   setup("set Dimension = " + std::to_string(dim) + R"(
+  Components<dim> setup("set Dimension = " + std::to_string(dim) + R"(
 set Problem = custom
 subsection Mesh
-  set Cell type = )" + cell_type + R"(
-  set Lower corner = )" + corner + R"(
-  set Upper corner = )" + upper + R"(
-  set Subdivisions = )" + blocks + R"(
+  set Cell type = )" + cell_type +
+                        R"(
+  set Lower corner = )" +
+                        corner + R"(
+  set Upper corner = )" +
+                        upper + R"(
+  set Subdivisions = )" +
+                        blocks + R"(
 end
 subsection Particles
   set Particles per cell = 3
 end
 )");
   // Nodal values of f(x) = 1 + sum_d (d + 2) x_d at the vertices.
-  const auto  &dofs = setup.shape_functions->dof_handler();
-  const auto  &partitioner = setup.system.partitioner();
+  const auto         &dofs        = setup.shape_functions->dof_handler();
+  const auto         &partitioner = setup.system.partitioner();
   std::vector<double> nodal(partitioner.locally_owned_size() +
                             partitioner.n_ghost_indices());
   Tensor<1, dim>      slope;
@@ -114,10 +120,10 @@ end
           value += data.values[e] * nodal[data.indices[e]];
           gradient += data.gradients[e] * nodal[data.indices[e]];
         }
-      max_error = std::max(
-        max_error,
-        std::abs(value - 1. - slope * particle.get_location()) +
-          (gradient - slope).norm());
+      max_error =
+        std::max(max_error,
+                 std::abs(value - 1. - slope * particle.get_location()) +
+                   (gradient - slope).norm());
       ++k;
     }
   check(max_error < 1e-12,

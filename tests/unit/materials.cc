@@ -15,7 +15,9 @@ make_material(const std::string &model, const double E, const double nu)
 {
   ParameterHandler prm;
   Material<dim>::declare_common_parameters(
-    prm, PluginRegistry<Material<dim>>::selection(), "");
+    prm,
+    PluginRegistry<Material<dim>>::selection(),
+    "");
   prm.enter_subsection("Material");
   prm.set("Model", model);
   prm.set("Young's modulus", E);
@@ -27,9 +29,9 @@ make_material(const std::string &model, const double E, const double nu)
 }
 
 void
-check_stress(const std::string             &label,
-             const SymmetricTensor<2, 2>   &computed,
-             const SymmetricTensor<2, 2>   &expected)
+check_stress(const std::string           &label,
+             const SymmetricTensor<2, 2> &computed,
+             const SymmetricTensor<2, 2> &expected)
 {
   const double error = (computed - expected).norm();
   check(error < 1e-12 * (1. + expected.norm()),
@@ -54,9 +56,9 @@ main(int argc, char **argv)
   const Tensor<2, 2> no_rate;
 
   {
-    const auto              model = make_material<2>("linear elastic", 100, 0.25);
-    SymmetricTensor<2, 2>   sigma;
-    SymmetricTensor<2, 2>   expected;
+    const auto            model = make_material<2>("linear elastic", 100, 0.25);
+    SymmetricTensor<2, 2> sigma;
+    SymmetricTensor<2, 2> expected;
     // sigma = lambda/J tr(eps) F + 2 mu/J F eps, eps = diag(0.1, 0), J = 1.1
     model->update_stress(stretch, no_rate, 1., sigma);
     expected[0][0] = 4. + 8.;
@@ -64,9 +66,9 @@ main(int argc, char **argv)
     check_stress("linear elastic, stretch", sigma, expected);
     // eps = [[0, 0.1], [0.1, 0]]: sigma = 2 mu F eps = [[1.6, 8], [8, 0]]
     model->update_stress(shear, no_rate, 1., sigma);
-    expected          = SymmetricTensor<2, 2>();
-    expected[0][0]    = 1.6;
-    expected[0][1]    = 8.;
+    expected       = SymmetricTensor<2, 2>();
+    expected[0][0] = 1.6;
+    expected[0][1] = 8.;
     check_stress("linear elastic, shear", sigma, expected);
     model->update_stress(unit_symmetric_tensor<2>(), no_rate, 1., sigma);
     check_stress("linear elastic, F = I", sigma, SymmetricTensor<2, 2>());
@@ -110,7 +112,9 @@ main(int argc, char **argv)
     check_stress("hypo-elastic, spin", sigma, expected);
     sigma = SymmetricTensor<2, 2>();
     model->update_stress(unit_symmetric_tensor<2>(), no_rate, 1., sigma);
-    check_stress("hypo-elastic, no deformation", sigma, SymmetricTensor<2, 2>());
+    check_stress("hypo-elastic, no deformation",
+                 sigma,
+                 SymmetricTensor<2, 2>());
   }
   {
     // 1D, nu = 0: every model gives E (F - 1) to first order; linear elastic

@@ -31,9 +31,9 @@ namespace MpmOtm
      */
     struct Entry
     {
-      std::string                                  name;
-      std::string                                  description;
-      std::function<void(ParameterHandler &)>      declare_parameters;
+      std::string                                 name;
+      std::string                                 description;
+      std::function<void(ParameterHandler &)>     declare_parameters;
       std::function<std::unique_ptr<Interface>()> create;
     };
 
@@ -117,17 +117,17 @@ namespace MpmOtm
  * have a static declare_parameters(ParameterHandler &) and a default
  * constructor.
  */
-#define MPM_OTM_REGISTER_PLUGIN(Interface, Class, name, description)    \
-  namespace                                                             \
-  {                                                                     \
-    const bool MPM_OTM_PLUGIN_CONCAT(registered_, __LINE__) =           \
-      ::MpmOtm::PluginRegistry<Interface>::add(                         \
-        {name,                                                          \
-         description,                                                   \
-         &Class::declare_parameters,                                    \
-         []() -> std::unique_ptr<Interface> {                           \
-           return std::make_unique<Class>();                            \
-         }});                                                           \
+#define MPM_OTM_REGISTER_PLUGIN(Interface, Class, name, description) \
+  namespace                                                          \
+  {                                                                  \
+    const bool MPM_OTM_PLUGIN_CONCAT(registered_, __LINE__) =        \
+      ::MpmOtm::PluginRegistry<Interface>::add(                      \
+        {name,                                                       \
+         description,                                                \
+         &Class::declare_parameters,                                 \
+         []() -> std::unique_ptr<Interface> {                        \
+           return std::make_unique<Class>();                         \
+         }});                                                        \
   }
 
 #endif

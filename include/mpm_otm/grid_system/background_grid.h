@@ -5,9 +5,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
-
 #include <deal.II/fe/mapping.h>
-
 #include <deal.II/grid/tria.h>
 
 #include <memory>
@@ -22,8 +20,8 @@ namespace MpmOtm
    * block a quadrilateral/hexahedral cell ("hypercube") or, for "simplex",
    * four triangles around the block's centre vertex in 2D (as in the thesis,
    * Fig. 4.2) and tetrahedra in 3D; intervals in 1D. Boundary ids per side:
-   * 2 d for the lower and 2 d + 1 for the upper side in direction d (0: x = x_min,
-   * 1: x = x_max, 2: y = y_min, ...). Hypercube grids in 2D and 3D are
+   * 2 d for the lower and 2 d + 1 for the upper side in direction d (0: x =
+   * x_min, 1: x = x_max, 2: y = y_min, ...). Hypercube grids in 2D and 3D are
    * p4est-distributed; 1D and simplex grids are serial.
    */
   template <int dim>
@@ -98,9 +96,9 @@ namespace MpmOtm
     void
     set_boundary_ids();
 
-    bool                             simplex = false;
-    BoundingBox<dim>                 bounding_box;
-    std::vector<unsigned int>        blocks;
+    bool                                simplex = false;
+    BoundingBox<dim>                    bounding_box;
+    std::vector<unsigned int>           blocks;
     std::unique_ptr<Triangulation<dim>> tria;
     std::unique_ptr<Mapping<dim>>       map;
   };

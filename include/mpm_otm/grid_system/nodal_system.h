@@ -2,7 +2,6 @@
 #define mpm_otm_grid_system_nodal_system_h
 
 #include <deal.II/base/partitioner.h>
-
 #include <deal.II/lac/la_parallel_vector.h>
 
 #include <mpm_otm/problems/problem.h>
@@ -57,10 +56,10 @@ namespace MpmOtm
      * empty functions.
      */
     void
-    assemble(const MaterialPoints<dim>       &material_points,
-             const ParticleShapeData<dim>    &shape_data,
-             const Problem<dim>              &problem,
-             const double                     time);
+    assemble(const MaterialPoints<dim>    &material_points,
+             const ParticleShapeData<dim> &shape_data,
+             const Problem<dim>           &problem,
+             const double                  time);
 
     /**
      * Assemble only the momenta sum_p m_p phi_i v_p from the current particle

@@ -106,9 +106,9 @@ namespace MpmOtm
                      const Statistics<dim> &statistics);
 
     std::string  output_directory;
-    unsigned int interval  = 0;
-    bool         write_csv = false;
-    bool         write_vtu = true;
+    unsigned int interval         = 0;
+    bool         write_csv        = false;
+    bool         write_vtu        = true;
     MPI_Comm     mpi_communicator = MPI_COMM_WORLD;
     std::vector<std::pair<double, std::string>> particle_records;
     std::vector<std::pair<double, std::string>> grid_records;

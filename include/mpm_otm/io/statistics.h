@@ -21,15 +21,15 @@ namespace MpmOtm
   template <int dim>
   struct Statistics
   {
-    double kinetic_energy          = 0;
-    double strain_energy           = 0;
-    double total_mass              = 0;
-    double momentum[3]             = {0, 0, 0};
-    bool   has_displacement_error  = false;
-    double displacement_rms_error  = 0;
-    double displacement_l2_error   = 0;
-    bool   has_stress_error        = false;
-    double stress_rms_error        = 0;
+    double kinetic_energy         = 0;
+    double strain_energy          = 0;
+    double total_mass             = 0;
+    double momentum[3]            = {0, 0, 0};
+    bool   has_displacement_error = false;
+    double displacement_rms_error = 0;
+    double displacement_l2_error  = 0;
+    bool   has_stress_error       = false;
+    double stress_rms_error       = 0;
 
     /**
      * Compute all measures over the points of every rank at @p time.

@@ -2,7 +2,6 @@
 #define mpm_otm_material_points_material_points_h
 
 #include <deal.II/base/parameter_handler.h>
-
 #include <deal.II/particles/particle_handler.h>
 
 #include <mpm_otm/material_points/property_layout.h>
@@ -116,10 +115,10 @@ namespace MpmOtm
     void
     locate_on_simplices();
 
-    const BackgroundGrid<dim>                        *grid = nullptr;
-    std::unique_ptr<GridTools::Cache<dim, dim>>       cache;
-    std::vector<unsigned int>                         n_per_direction;
-    std::unique_ptr<Particles::ParticleHandler<dim>> particles;
+    const BackgroundGrid<dim>                                *grid = nullptr;
+    std::unique_ptr<GridTools::Cache<dim, dim>>               cache;
+    std::vector<unsigned int>                                 n_per_direction;
+    std::unique_ptr<Particles::ParticleHandler<dim>>          particles;
     std::vector<std::pair<types::particle_index, Point<dim>>> lost_points;
   };
 } // namespace MpmOtm

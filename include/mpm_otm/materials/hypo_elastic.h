@@ -6,7 +6,8 @@
 namespace MpmOtm
 {
   /**
-   * The hypo-elastic model with the Jaumann stress rate of thesis Eqs. 2.4-2.7, integrated incrementally as in thesis Eqs. 2.40-2.43.
+   * The hypo-elastic model with the Jaumann stress rate of thesis Eqs. 2.4-2.7,
+   * integrated incrementally as in thesis Eqs. 2.40-2.43.
    */
   template <int dim>
   class HypoElastic : public Material<dim>

@@ -6,7 +6,9 @@
 namespace MpmOtm
 {
   /**
-   * The finite-strain "linear elastic" model of journal Eq. 10, sigma = lambda/J tr(eps) F + 2 mu/J F eps with eps = (F + F^T)/2 - I (symmetric part stored).
+   * The finite-strain "linear elastic" model of journal Eq. 10, sigma =
+   * lambda/J tr(eps) F + 2 mu/J F eps with eps = (F + F^T)/2 - I (symmetric
+   * part stored).
    */
   template <int dim>
   class LinearElastic : public Material<dim>

@@ -92,9 +92,9 @@ namespace MpmOtm
     wave_speed() const;
 
   protected:
-    double young      = 0;
-    double poisson    = 0;
-    double rho        = 0;
+    double young       = 0;
+    double poisson     = 0;
+    double rho         = 0;
     double lambda_lame = 0;
     double mu_lame     = 0;
   };

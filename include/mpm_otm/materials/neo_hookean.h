@@ -6,7 +6,8 @@
 namespace MpmOtm
 {
   /**
-   * The compressible neo-Hookean model of journal Eq. 11, sigma = lambda ln(J)/J I + mu/J (F F^T - I).
+   * The compressible neo-Hookean model of journal Eq. 11, sigma = lambda
+   * ln(J)/J I + mu/J (F F^T - I).
    */
   template <int dim>
   class NeoHookean : public Material<dim>

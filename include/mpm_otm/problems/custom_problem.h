@@ -1,9 +1,9 @@
 #ifndef mpm_otm_problems_custom_problem_h
 #define mpm_otm_problems_custom_problem_h
 
-#include <mpm_otm/problems/problem.h>
-
 #include <deal.II/base/function_parser.h>
+
+#include <mpm_otm/problems/problem.h>
 
 #include <memory>
 

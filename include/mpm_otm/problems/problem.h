@@ -24,7 +24,7 @@ namespace MpmOtm
   template <int dim>
   struct FixedComponents
   {
-    types::boundary_id     boundary_id;
+    types::boundary_id    boundary_id;
     std::array<bool, dim> fixed;
   };
 

@@ -2,7 +2,6 @@
 #define mpm_otm_shape_functions_linear_lagrange_h
 
 #include <deal.II/base/parameter_handler.h>
-
 #include <deal.II/fe/fe.h>
 
 #include <mpm_otm/shape_functions/shape_functions.h>
@@ -33,7 +32,7 @@ namespace MpmOtm
     dof_handler() const override;
 
     void
-    evaluate(const MaterialPoints<dim>          &material_points,
+    evaluate(const MaterialPoints<dim>         &material_points,
              const Utilities::MPI::Partitioner &partitioner,
              ParticleShapeData<dim>            &data) const override;
 
@@ -46,15 +45,15 @@ namespace MpmOtm
      * cell's vertices.
      */
     static void
-    reference_values(const bool                  simplex,
-                     const Point<dim>           &xi,
-                     double                     *values,
-                     Tensor<1, dim>             *reference_gradients);
+    reference_values(const bool        simplex,
+                     const Point<dim> &xi,
+                     double           *values,
+                     Tensor<1, dim>   *reference_gradients);
 
   private:
-    bool                                    simplex = false;
-    std::unique_ptr<FiniteElement<dim>>     fe;
-    DoFHandler<dim>                         dofs;
+    bool                                simplex = false;
+    std::unique_ptr<FiniteElement<dim>> fe;
+    DoFHandler<dim>                     dofs;
   };
 } // namespace MpmOtm
 

@@ -3,7 +3,6 @@
 
 #include <deal.II/base/index_set.h>
 #include <deal.II/base/partitioner.h>
-
 #include <deal.II/dofs/dof_handler.h>
 
 #include <mpm_otm/shape_functions/particle_shape_data.h>
@@ -49,7 +48,7 @@ namespace MpmOtm
      * are local indices of @p partitioner.
      */
     virtual void
-    evaluate(const MaterialPoints<dim>          &material_points,
+    evaluate(const MaterialPoints<dim>         &material_points,
              const Utilities::MPI::Partitioner &partitioner,
              ParticleShapeData<dim>            &data) const = 0;
 

@@ -115,8 +115,8 @@ namespace MpmOtm
     MPI_Comm           communicator;
     ConditionalOStream pcout;
 
-    double end_time  = 0;
-    double time_step = 0;
+    double end_time     = 0;
+    double time_step    = 0;
     double current_time = 0;
 
     std::unique_ptr<BackgroundGrid<dim>> grid;
