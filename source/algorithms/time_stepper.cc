@@ -80,15 +80,6 @@ namespace MpmOtm
 
 
   template <int dim>
-  const ParticleShapeData<dim> &
-  TimeStepper<dim>::shape_data() const
-  {
-    return data;
-  }
-
-
-
-  template <int dim>
   void
   TimeStepper<dim>::advance_particle_velocities(const double dt)
   {
@@ -156,7 +147,8 @@ namespace MpmOtm
           sigma.norm() +
           Layout::get_vector(properties, Layout::velocity).norm() +
           properties[Layout::volume];
-        if (!std::isfinite(check) && bad_point == numbers::invalid_unsigned_int)
+        const bool healthy = std::isfinite(check) && determinant(F) > 0.;
+        if (!healthy && bad_point == numbers::invalid_unsigned_int)
           {
             bad_point    = particle.get_id();
             bad_location = location;
@@ -174,7 +166,7 @@ namespace MpmOtm
             std::ostringstream message;
             message << "material point " << bad_point << " at (" << bad_location
                     << ") has a non-finite velocity, stress "
-                    << "or volume. ";
+                    << "or volume, or an inverted deformation (det F <= 0). ";
             text = message.str();
           }
         std::string all;

@@ -4,6 +4,8 @@
 #include <mpm_otm/base/plugins.h>
 #include <mpm_otm/grid_system/consistent_mass_matrix.h>
 
+#include <cmath>
+
 namespace MpmOtm
 {
   namespace
@@ -115,6 +117,10 @@ namespace MpmOtm
     solution = 0.;
 
     const double norm = rhs.l2_norm();
+    AssertThrow(std::isfinite(norm),
+                ExcMessage("A nodal force or momentum is not finite (NaN or "
+                           "infinite): check the body force, traction and "
+                           "initial velocity expressions and the time step."));
     if (norm == 0.)
       return;
 

@@ -162,19 +162,25 @@ namespace MpmOtm
                                 const MPI_Comm          communicator)
   {
     mpi_communicator = communicator;
+    // Rank 0 creates the directory; every rank learns whether that worked,
+    // so that all stop together instead of waiting for rank 0.
+    std::string problem;
     if (Utilities::MPI::this_mpi_process(communicator) == 0)
       {
         std::error_code error;
         std::filesystem::create_directories(output_directory, error);
-        AssertThrow(!error && std::filesystem::is_directory(output_directory),
-                    ExcMessage("Output/Directory: cannot create <" +
-                               output_directory + ">: " + error.message()));
         std::ofstream parameters(output_directory + "/parameters.prm");
-        AssertThrow(parameters,
-                    ExcMessage("Output/Directory: cannot write to <" +
-                               output_directory + ">."));
-        prm.print_parameters(parameters, ParameterHandler::PRM);
-
+        if (error || !parameters)
+          problem = "Output/Directory: cannot create or write to <" +
+                    output_directory + ">" +
+                    (error ? ": " + error.message() : std::string()) + ".";
+        else
+          prm.print_parameters(parameters, ParameterHandler::PRM);
+      }
+    problem = Utilities::MPI::broadcast(communicator, problem, 0);
+    AssertThrow(problem.empty(), ExcMessage(problem));
+    if (Utilities::MPI::this_mpi_process(communicator) == 0)
+      {
         std::ofstream statistics(output_directory + "/statistics.csv");
         statistics << "step,time,kinetic_energy,strain_energy,total_energy";
         if (has_displacement_error)

@@ -220,6 +220,39 @@ namespace MpmOtm
           }
       }
     particles->update_cached_numbers();
+
+    // Every traction boundary must lie on a block boundary and have received
+    // boundary points.
+    for (const auto id : problem.traction_boundaries())
+      {
+        const unsigned int d    = id / 2;
+        const double       face = (id % 2 == 0) ?
+                                    region.get_boundary_points().first[d] :
+                                    region.get_boundary_points().second[d];
+        const double       blocks_to_face =
+          (face - lower[d]) / (grid->box().side_length(d) / blocks[d]);
+        AssertThrow(
+          std::abs(blocks_to_face - std::round(blocks_to_face)) < 1e-8,
+          ExcMessage("The material region's side carrying traction boundary " +
+                     std::to_string(id) +
+                     " must lie on a block boundary of the grid (see "
+                     "Mesh/Subdivisions)."));
+        unsigned int n = 0;
+        for (const auto &particle : *particles)
+          {
+            const auto properties = particle.get_properties();
+            if (properties[PropertyLayout<dim>::traction_measure] > 0. &&
+                properties[PropertyLayout<dim>::traction_boundary] == id)
+              ++n;
+          }
+        AssertThrow(Utilities::MPI::sum(n, communicator()) > 0,
+                    ExcMessage(
+                      "No material point lies next to traction boundary " +
+                      std::to_string(id) +
+                      ": the material region must end on a block boundary "
+                      "of the grid on that side (check the problem's "
+                      "material region and Mesh/Subdivisions)."));
+      }
   }
 
 
@@ -442,15 +475,6 @@ namespace MpmOtm
   MaterialPoints<dim>::n_global_points() const
   {
     return particles->n_global_particles();
-  }
-
-
-
-  template <int dim>
-  const std::vector<unsigned int> &
-  MaterialPoints<dim>::points_per_block() const
-  {
-    return n_per_direction;
   }
 
 

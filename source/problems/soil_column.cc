@@ -45,10 +45,11 @@ namespace MpmOtm
                               const BoundingBox<dim> &box)
   {
     Problem<dim>::initialize(material, box);
-    height = box.side_length(dim - 1);
-    bottom = box.get_boundary_points().first[dim - 1];
-    c      = material.wave_speed();
-    rho    = material.density();
+    height  = box.side_length(dim - 1);
+    bottom  = box.get_boundary_points().first[dim - 1];
+    c       = material.wave_speed();
+    rho     = material.density();
+    lateral = material.lambda() / (material.lambda() + 2. * material.mu());
   }
 
 
@@ -150,6 +151,8 @@ namespace MpmOtm
       }
     SymmetricTensor<2, dim> sigma;
     sigma[dim - 1][dim - 1] = rho * gravity * sum;
+    for (unsigned int d = 0; d + 1 < dim; ++d)
+      sigma[d][d] = lateral * sigma[dim - 1][dim - 1];
     return sigma;
   }
 

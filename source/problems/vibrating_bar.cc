@@ -44,6 +44,7 @@ namespace MpmOtm
     const double c = material.wave_speed();
     omega          = numbers::PI * c / length;
     impedance      = material.density() * c;
+    lateral = material.lambda() / (material.lambda() + 2. * material.mu());
   }
 
 
@@ -106,6 +107,8 @@ namespace MpmOtm
     SymmetricTensor<2, dim> sigma;
     sigma[0][0] = v0 * impedance * std::sin(omega * time) *
                   std::cos(numbers::PI * (X[0] - x0) / length);
+    for (unsigned int d = 1; d < dim; ++d)
+      sigma[d][d] = lateral * sigma[0][0];
     return sigma;
   }
 

@@ -2,7 +2,11 @@
 // translating on a 2D grid, quadrilaterals and triangles, lumped and
 // consistent mass, USL and MUSL: the total mass stays exactly constant and
 // the linear momentum is conserved to round-off (the forces sum to zero
-// because the shape functions are a partition of unity).
+// because the shape functions are a partition of unity). Then the same body
+// under gravity g and a traction tau(t) = (3 t, 0) on its side x = 3 (length
+// 2): the momentum must be M g t + (2 * 3 t^2 / 2, 0) after each step, where
+// the traction of a step is the one at its start, so after n steps of dt
+// the traction impulse is 2 * 3 dt^2 n (n - 1) / 2.
 
 #include <mpm_otm/io/statistics.h>
 
@@ -71,4 +75,46 @@ end
                   << ", momentum conserved to 1e-12, "
                   << setup.points.n_global_points() << " points" << std::endl;
         }
+
+  Components<2>      loaded(R"(
+set Dimension = 2
+set Problem = custom
+subsection Mesh
+  set Lower corner = 0, 0
+  set Upper corner = 4, 4
+  set Subdivisions = 8, 8
+end
+subsection Particles
+  set Particles per cell = 3
+end
+subsection Material
+  set Young's modulus = 1e3
+end
+subsection Custom problem
+  set Material lower corner = 1, 1
+  set Material upper corner = 3, 3
+  set Body force = 0; -2
+  set Traction boundary ids = 1
+  set Traction = 3*t; 0
+end
+)");
+  const double       dt      = 1e-3;
+  const unsigned int n_steps = 40;
+  for (unsigned int step = 0; step < n_steps; ++step)
+    loaded.stepper->advance(step * dt, dt);
+  Statistics<2> state;
+  state.compute(loaded.points, *loaded.material, *loaded.problem, n_steps * dt);
+  const double mass       = 4.;
+  const double expected_x = 2. * 3. * dt * dt * n_steps * (n_steps - 1) / 2.;
+  const double expected_y = -2. * mass * n_steps * dt;
+  const double error_x    = std::abs(state.momentum[0] - expected_x);
+  const double error_y    = std::abs(state.momentum[1] - expected_y);
+  check(error_x < 1e-12 * std::abs(expected_x) &&
+          error_y < 1e-12 * std::abs(expected_y),
+        "momentum under gravity and traction: (" +
+          std::to_string(state.momentum[0]) + ", " +
+          std::to_string(state.momentum[1]) + "), expected (" +
+          std::to_string(expected_x) + ", " + std::to_string(expected_y) + ")");
+  deallog << "gravity and traction: momentum " << state.momentum[0] << ' '
+          << state.momentum[1] << " as computed by hand" << std::endl;
 }

@@ -51,12 +51,6 @@ namespace MpmOtm
     void
     advance(const double time, const double dt);
 
-    /**
-     * The shape functions of the last step.
-     */
-    const ParticleShapeData<dim> &
-    shape_data() const;
-
   private:
     void
     advance_particle_velocities(const double dt);

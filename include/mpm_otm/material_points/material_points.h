@@ -98,11 +98,6 @@ namespace MpmOtm
     types::particle_index
     n_global_points() const;
 
-    /**
-     * Points per direction per block.
-     */
-    const std::vector<unsigned int> &
-    points_per_block() const;
 
   private:
     void

@@ -11,7 +11,9 @@ namespace MpmOtm
    * 2 (dim - 1)) is fixed, the sides only in their normal direction, the top
    * is free; gravity g acts from rest. Exact small-deformation solution
    * u(y, t) = (g / c^2) sum_n 16 H^2 / ((2n-1)^3 pi^3) (1 - cos(w_n t))
-   * sin(k_n y), k_n = (2n - 1) pi / (2H), w_n = c k_n.
+   * sin(k_n y), k_n = (2n - 1) pi / (2H), w_n = c k_n, c the longitudinal
+   * wave speed sqrt((lambda + 2 mu) / rho) (sqrt(E / rho) for nu = 0); the
+   * lateral stresses are lambda / (lambda + 2 mu) sigma_yy.
    */
   template <int dim>
   class SoilColumn : public Problem<dim>
@@ -55,6 +57,7 @@ namespace MpmOtm
     double       bottom  = 0;
     double       c       = 0;
     double       rho     = 0;
+    double       lateral = 0;
   };
 } // namespace MpmOtm
 

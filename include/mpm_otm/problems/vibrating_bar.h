@@ -11,7 +11,10 @@ namespace MpmOtm
    * of thesis Sect. 4.1, B5). Both ends (boundaries 0 and 1) are fixed, the
    * other sides only in their normal direction. Exact small-deformation
    * solution u = (v0/w) sin(w t) sin(pi X/L), sigma_xx = v0 rho c sin(w t)
-   * cos(pi X/L), w = pi c / L, with L the grid length in x.
+   * cos(pi X/L), w = pi c / L, with L the grid length in x and c the
+   * longitudinal (uniaxial-strain) wave speed sqrt((lambda + 2 mu) / rho),
+   * sqrt(E / rho) for nu = 0; the lateral stresses are lambda / (lambda +
+   * 2 mu) sigma_xx.
    */
   template <int dim>
   class VibratingBar : public Problem<dim>
@@ -48,6 +51,7 @@ namespace MpmOtm
     double x0        = 0;
     double omega     = 0;
     double impedance = 0;
+    double lateral   = 0;
   };
 } // namespace MpmOtm
 
