@@ -4,7 +4,6 @@
 #include <mpm_otm/base/plugins.h>
 #include <mpm_otm/grid_system/consistent_mass_matrix.h>
 
-#include <cmath>
 
 namespace MpmOtm
 {
@@ -117,10 +116,6 @@ namespace MpmOtm
     solution = 0.;
 
     const double norm = rhs.l2_norm();
-    AssertThrow(std::isfinite(norm),
-                ExcMessage("A nodal force or momentum is not finite (NaN or "
-                           "infinite): check the body force, traction and "
-                           "initial velocity expressions and the time step."));
     if (norm == 0.)
       return;
 

@@ -5,6 +5,7 @@
 #include <mpm_otm/shape_functions/shape_functions.h>
 
 #include <algorithm>
+#include <cmath>
 
 namespace MpmOtm
 {
@@ -138,6 +139,19 @@ namespace MpmOtm
         momentum[c].compress(VectorOperation::add);
         force[c].compress(VectorOperation::add);
       }
+
+    // A non-finite force would spoil every later step (and make the
+    // consistent solve accept anything): stop here on every rank.
+    bool finite = true;
+    for (unsigned int c = 0; c < dim; ++c)
+      for (unsigned int i = 0; i < force[c].locally_owned_size(); ++i)
+        finite = finite && std::isfinite(force[c].local_element(i)) &&
+                 std::isfinite(momentum[c].local_element(i));
+    AssertThrow(Utilities::MPI::min(finite ? 1 : 0,
+                                    lumped_mass.get_mpi_communicator()) == 1,
+                ExcMessage("A nodal force or momentum is not finite (NaN or "
+                           "infinite): check the body force, traction and "
+                           "initial velocity expressions and the time step."));
 
     empty.clear();
     for (unsigned int i = 0; i < lumped_mass.locally_owned_size(); ++i)
