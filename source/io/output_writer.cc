@@ -249,12 +249,7 @@ namespace MpmOtm
                                          step,
                                          mpi_communicator,
                                          5);
-    particle_records.emplace_back(time, record);
-    if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
-      {
-        std::ofstream pvd(output_directory + "/particles.pvd");
-        DataOutBase::write_pvd_record(pvd, particle_records);
-      }
+    append_to_time_series("particles", time, record, particle_records);
   }
 
 
@@ -289,11 +284,24 @@ namespace MpmOtm
                                           step,
                                           mpi_communicator,
                                           5);
-    grid_records.emplace_back(time, record);
+    append_to_time_series("grid", time, record, grid_records);
+  }
+
+
+
+  template <int dim>
+  void
+  OutputWriter<dim>::append_to_time_series(
+    const std::string                           &name,
+    const double                                 time,
+    const std::string                           &record,
+    std::vector<std::pair<double, std::string>> &records) const
+  {
+    records.emplace_back(time, record);
     if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
       {
-        std::ofstream pvd(output_directory + "/grid.pvd");
-        DataOutBase::write_pvd_record(pvd, grid_records);
+        std::ofstream pvd(output_directory + "/" + name + ".pvd");
+        DataOutBase::write_pvd_record(pvd, records);
       }
   }
 

@@ -96,6 +96,17 @@ namespace MpmOtm
                    const ShapeFunctions<dim> &shape_functions,
                    NodalSystem<dim>          &system);
 
+    /**
+     * Add @p record (a .pvtu file) at @p time to @p records and rewrite
+     * @p name.pvd.
+     */
+    void
+    append_to_time_series(
+      const std::string                           &name,
+      const double                                 time,
+      const std::string                           &record,
+      std::vector<std::pair<double, std::string>> &records) const;
+
     void
     write_particle_csv(const unsigned int         step,
                        const MaterialPoints<dim> &material_points) const;
