@@ -17,6 +17,7 @@ namespace MpmOtm
     const MassMatrix<dim>        &mass_matrix,
     const MaterialPoints<dim>    &material_points,
     const ParticleShapeData<dim> &shape_data,
+    const double,
     const double) const
   {
     system.assemble_momentum(material_points, shape_data);

@@ -14,6 +14,7 @@ namespace MpmOtm
                                 NodalSystem<dim>          &system,
                                 const MassMatrix<dim>     &mass_matrix,
                                 const NodalUpdate<dim>    &nodal_update,
+                                GridMotion<dim>           &grid_motion,
                                 const Material<dim>       &material,
                                 const Problem<dim>        &problem,
                                 TimerOutput               &timer)
@@ -22,6 +23,7 @@ namespace MpmOtm
     , system(system)
     , mass_matrix(mass_matrix)
     , nodal_update(nodal_update)
+    , grid_motion(grid_motion)
     , material(material)
     , problem(problem)
     , timer(timer)
@@ -53,28 +55,35 @@ namespace MpmOtm
           system.acceleration[c].update_ghost_values();
         }
     }
-    {
-      TimerOutput::Scope scope(timer, "grid to particle");
-      advance_particle_velocities(dt);
-    }
+    const bool velocity_from_displacement =
+      nodal_update.particle_velocity() ==
+      NodalUpdate<dim>::ParticleVelocity::from_displacement;
+    if (!velocity_from_displacement)
+      {
+        TimerOutput::Scope scope(timer, "grid to particle");
+        advance_particle_velocities(dt);
+      }
     {
       TimerOutput::Scope scope(timer, "solve");
       nodal_update.compute_nodal_velocities(system,
                                             mass_matrix,
                                             material_points,
                                             data,
-                                            dt);
+                                            dt,
+                                            previous_dt > 0. ? previous_dt :
+                                                               dt);
       for (unsigned int c = 0; c < dim; ++c)
         system.velocity[c].update_ghost_values();
     }
     {
       TimerOutput::Scope scope(timer, "grid to particle");
-      update_particles(dt);
+      update_particles(dt, velocity_from_displacement);
     }
     {
-      TimerOutput::Scope scope(timer, "locate particles");
-      material_points.locate();
+      TimerOutput::Scope scope(timer, "move grid, locate particles");
+      grid_motion.advance(system, material_points, dt);
     }
+    previous_dt = dt;
   }
 
 
@@ -103,7 +112,8 @@ namespace MpmOtm
 
   template <int dim>
   void
-  TimeStepper<dim>::update_particles(const double dt)
+  TimeStepper<dim>::update_particles(const double dt,
+                                     const bool   velocity_from_displacement)
   {
     using Layout = PropertyLayout<dim>;
     const double *v[dim];
@@ -115,7 +125,7 @@ namespace MpmOtm
     unsigned int          k = 0;
     for (auto &particle : material_points.particle_handler())
       {
-        Tensor<1, dim> displacement;
+        Tensor<1, dim> point_velocity;
         Tensor<2, dim> velocity_gradient;
         for (unsigned int e = data.offsets[k]; e < data.offsets[k + 1]; ++e)
           {
@@ -123,13 +133,14 @@ namespace MpmOtm
             const Tensor<1, dim> &grad = data.gradients[e];
             for (unsigned int c = 0; c < dim; ++c)
               {
-                displacement[c] += data.values[e] * v[c][i];
+                point_velocity[c] += data.values[e] * v[c][i];
                 velocity_gradient[c] += v[c][i] * grad;
               }
           }
-        displacement *= dt;
+        const auto properties = particle.get_properties();
+        if (velocity_from_displacement)
+          Layout::set_vector(properties, Layout::velocity, point_velocity);
 
-        const auto     properties = particle.get_properties();
         Tensor<2, dim> F = Layout::get_deformation_gradient(properties);
         F = (unit_symmetric_tensor<dim>() + dt * velocity_gradient) * F;
         Layout::set_deformation_gradient(properties, F);
@@ -140,7 +151,8 @@ namespace MpmOtm
         material.update_stress(F, velocity_gradient, dt, sigma);
         Layout::set_stress(properties, sigma);
 
-        const Point<dim> location = particle.get_location() + displacement;
+        const Point<dim> location =
+          particle.get_location() + dt * point_velocity;
         particle.set_location(location);
 
         const double check =

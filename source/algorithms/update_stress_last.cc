@@ -17,7 +17,8 @@ namespace MpmOtm
     const MassMatrix<dim> &mass_matrix,
     const MaterialPoints<dim> &,
     const ParticleShapeData<dim> &shape_data,
-    const double                  dt) const
+    const double                  dt,
+    const double) const
   {
     for (unsigned int c = 0; c < dim; ++c)
       {

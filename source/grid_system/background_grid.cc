@@ -3,6 +3,7 @@
 #include <deal.II/fe/fe_simplex_p.h>
 #include <deal.II/fe/mapping_cartesian.h>
 #include <deal.II/fe/mapping_fe.h>
+#include <deal.II/fe/mapping_q.h>
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_tools.h>
 
@@ -115,7 +116,8 @@ namespace MpmOtm
 
   template <int dim>
   void
-  BackgroundGrid<dim>::create(const MPI_Comm communicator)
+  BackgroundGrid<dim>::create(const MPI_Comm communicator,
+                              const bool     vertices_move)
   {
     const bool distributed = (dim > 1 && !simplex);
     if (distributed)
@@ -137,7 +139,10 @@ namespace MpmOtm
           blocks,
           bounding_box.get_boundary_points().first,
           bounding_box.get_boundary_points().second);
-        map = std::make_unique<MappingCartesian<dim>>();
+        if (vertices_move)
+          map = std::make_unique<MappingQ<dim>>(1);
+        else
+          map = std::make_unique<MappingCartesian<dim>>();
       }
     else
       {

@@ -174,6 +174,15 @@ namespace MpmOtm
 
 
 
+  template <int dim>
+  bool
+  LinearLagrange<dim>::is_linearly_complete() const
+  {
+    return true;
+  }
+
+
+
   template class LinearLagrange<1>;
   template class LinearLagrange<2>;
   template class LinearLagrange<3>;

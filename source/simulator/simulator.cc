@@ -1,6 +1,9 @@
 #include <deal.II/base/timer.h>
 
+#include <mpm_otm/algorithms/advected_grid.h>
+#include <mpm_otm/algorithms/fixed_grid.h>
 #include <mpm_otm/algorithms/nodal_update.h>
+#include <mpm_otm/algorithms/optimal_transportation_update.h>
 #include <mpm_otm/algorithms/time_stepper.h>
 #include <mpm_otm/base/plugins.h>
 #include <mpm_otm/grid_system/background_grid.h>
@@ -88,16 +91,27 @@ namespace MpmOtm
                         PluginRegistry<Problem<dim>>::selection()),
                       "Benchmark or user problem:" +
                         PluginRegistry<Problem<dim>>::documentation());
-    prm.declare_entry("Method",
-                      "MPM",
-                      Patterns::Selection("MPM"),
-                      "MPM: material-point method, shape functions on the "
-                      "fixed background grid (journal Alg. 1).");
     prm.declare_entry(
-      "Update scheme",
-      "USL",
-      Patterns::Selection(PluginRegistry<NodalUpdate<dim>>::selection()),
-      "Nodal update:" + PluginRegistry<NodalUpdate<dim>>::documentation());
+      "Method",
+      "MPM",
+      Patterns::Selection("MPM|OTM|Unified"),
+      "MPM: material-point method, shape functions on the fixed background "
+      "grid (journal Alg. 1; nodal update from 'Update scheme'). "
+      "OTM: optimal transportation meshfree method (journal Alg. 2): the "
+      "grid's vertices move with the material every step, nodal update of "
+      "Eq. 51, particle velocities from the displacements; needs linearly "
+      "complete shape functions. "
+      "Unified: the unified approach (journal Alg. 3): the grid moves as in "
+      "OTM, the particle update is that of 'Update scheme'; the journal uses "
+      "it with Mass matrix = consistent. OTM and Unified mesh only the "
+      "material domain.");
+    prm.declare_entry("Update scheme",
+                      "USL",
+                      Patterns::Selection(
+                        PluginRegistry<NodalUpdate<dim>>::selection()),
+                      "Nodal update of Method = MPM and Unified:" +
+                        PluginRegistry<NodalUpdate<dim>>::documentation() +
+                        " (OTM has its own, Eq. 51).");
     prm.declare_entry("Shape functions",
                       "linear",
                       Patterns::Selection(
@@ -150,10 +164,37 @@ namespace MpmOtm
     problem_description =
       PluginRegistry<Problem<dim>>::create(prm.get("Problem"));
     problem_description->parse_parameters(prm);
-    nodal_update =
-      PluginRegistry<NodalUpdate<dim>>::create(prm.get("Update scheme"));
     shape_functions =
       PluginRegistry<ShapeFunctions<dim>>::create(prm.get("Shape functions"));
+    const std::string method = prm.get("Method");
+    if (method == "OTM")
+      {
+        AssertThrow(prm.get("Update scheme") == "USL",
+                    ExcMessage("Update scheme = " + prm.get("Update scheme") +
+                               " applies to Method = MPM or Unified; OTM has "
+                               "its own nodal update (journal Eq. 51). Remove "
+                               "the entry or set it to USL."));
+        AssertThrow(shape_functions->is_linearly_complete(),
+                    ExcMessage(
+                      "Method = OTM needs linearly complete shape "
+                      "functions (journal Eq. 47); Shape functions = " +
+                      prm.get("Shape functions") +
+                      " are not. Use Method = MPM or Unified, or "
+                      "linearly complete functions."));
+        nodal_update = std::make_unique<OptimalTransportationUpdate<dim>>();
+        if (prm.get("Mass matrix") != "consistent")
+          pcout << "Note: OTM with Mass matrix = " << prm.get("Mass matrix")
+                << " smooths the particle velocities (journal Eq. 57) "
+                << "every step and is dissipative; Alg. 2 uses the "
+                << "consistent mass matrix (Eq. 48)." << std::endl;
+      }
+    else
+      nodal_update =
+        PluginRegistry<NodalUpdate<dim>>::create(prm.get("Update scheme"));
+    if (method == "MPM")
+      grid_motion = std::make_unique<FixedGrid<dim>>();
+    else
+      grid_motion = std::make_unique<AdvectedGrid<dim>>();
     mass_matrix =
       PluginRegistry<MassMatrix<dim>>::create(prm.get("Mass matrix"));
 
@@ -182,7 +223,7 @@ namespace MpmOtm
   void
   Simulator<dim>::setup(const ParameterHandler &prm)
   {
-    grid->create(communicator);
+    grid->create(communicator, grid_motion->moves_vertices());
 
     const double h           = grid->minimal_cell_size();
     const double wave_speed  = material->wave_speed();
@@ -208,6 +249,7 @@ namespace MpmOtm
     shape_functions->initialize(*grid);
     system = std::make_unique<NodalSystem<dim>>();
     system->setup(*shape_functions, problem_description->fixed_components());
+    grid_motion->initialize(*grid, *shape_functions, *system);
     output->initialize(prm,
                        problem_description->has_exact_solution(),
                        problem_description->has_exact_stress(),
@@ -237,6 +279,7 @@ namespace MpmOtm
                              *system,
                              *mass_matrix,
                              *nodal_update,
+                             *grid_motion,
                              *material,
                              *problem_description,
                              timer);
@@ -302,6 +345,24 @@ namespace MpmOtm
   Simulator<dim>::material_points() const
   {
     return *points;
+  }
+
+
+
+  template <int dim>
+  const BackgroundGrid<dim> &
+  Simulator<dim>::background_grid() const
+  {
+    return *grid;
+  }
+
+
+
+  template <int dim>
+  const DoFHandler<dim> &
+  Simulator<dim>::dof_handler() const
+  {
+    return shape_functions->dof_handler();
   }
 
 

@@ -1,6 +1,7 @@
 // Parallel runs on a p4est-distributed grid with two MPI ranks give the
 // serial result: the 2D bar of B5 on quadrilaterals and a 3D bar on
-// hexahedra, each run once on MPI_COMM_WORLD (2 ranks) and once on rank 0
+// hexahedra, with MPM and with the moving grid of OTM (2D) and the unified
+// approach (3D), each run once on MPI_COMM_WORLD (2 ranks) and once on rank 0
 // alone; the error norms against the exact solution and the energies agree
 // to round-off, and the errors are small.
 
@@ -67,7 +68,7 @@ subsection Vibrating bar
   set Initial velocity amplitude = 0.1
 end
 )";
-  compare<2>("2D", common + R"(
+  const std::string bar_2d = R"(
 set Dimension = 2
 subsection Mesh
   set Lower corner = 0, 0
@@ -77,8 +78,8 @@ end
 subsection Particles
   set Particles per cell = 4
 end
-)");
-  compare<3>("3D", common + R"(
+)";
+  const std::string bar_3d = R"(
 set Dimension = 3
 subsection Mesh
   set Lower corner = 0, 0, 0
@@ -88,5 +89,10 @@ end
 subsection Particles
   set Particles per cell = 3
 end
-)");
+)";
+  compare<2>("2D", common + bar_2d);
+  compare<3>("3D", common + bar_3d);
+  compare<2>("2D OTM",
+             common + bar_2d + "set Method = OTM\nset Update scheme = USL\n");
+  compare<3>("3D Unified", common + bar_3d + "set Method = Unified\n");
 }

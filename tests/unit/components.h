@@ -7,6 +7,7 @@
 
 #include <deal.II/base/timer.h>
 
+#include <mpm_otm/algorithms/fixed_grid.h>
 #include <mpm_otm/algorithms/nodal_update.h>
 #include <mpm_otm/algorithms/time_stepper.h>
 #include <mpm_otm/base/plugins.h>
@@ -57,6 +58,7 @@ struct Components
                                                  system,
                                                  *mass_matrix,
                                                  *update,
+                                                 grid_motion,
                                                  *material,
                                                  *problem,
                                                  timer);
@@ -69,6 +71,7 @@ struct Components
   MpmOtm::NodalSystem<dim>                     system;
   std::unique_ptr<MpmOtm::Problem<dim>>        problem;
   std::unique_ptr<MpmOtm::NodalUpdate<dim>>    update;
+  MpmOtm::FixedGrid<dim>                       grid_motion;
   std::unique_ptr<MpmOtm::ShapeFunctions<dim>> shape_functions;
   std::unique_ptr<MpmOtm::MassMatrix<dim>>     mass_matrix;
   std::unique_ptr<MpmOtm::Material<dim>>       material;

@@ -12,25 +12,55 @@ namespace MpmOtm
 
   /**
    * The form of the nodal update: how the nodal velocities v_i^{s+1} that
-   * move the material points are obtained once the nodal accelerations are
-   * known and the particle velocities have been advanced (the only step in
-   * which USL, MUSL and, later, OTM differ; see ARCHITECTURE.md).
+   * move the material points (and, in OTM and the unified approach, the
+   * nodes) are obtained once the nodal accelerations are known, and how the
+   * particle velocities follow (the step in which USL, MUSL and OTM differ;
+   * see ARCHITECTURE.md). The nodal displacement of the step is dt v_i^{s+1}.
    */
   template <int dim>
   class NodalUpdate
   {
   public:
+    /**
+     * How a material point's velocity is advanced.
+     */
+    enum class ParticleVelocity
+    {
+      /**
+       * v_p^{s+1} = v_p^s + dt sum_i phi_i a_i (journal Eq. 27), before the
+       * nodal velocities are computed (MUSL projects the result).
+       */
+      from_acceleration,
+      /**
+       * v_p^{s+1} = (x_p^{s+1} - x_p^s) / dt, the velocity that OTM's
+       * momentum (Eq. 49) implies, after the point has moved.
+       */
+      from_displacement
+    };
+
     virtual ~NodalUpdate() = default;
 
     /**
-     * Fill system.velocity (locally owned entries) for the step @p dt.
+     * Fill system.velocity (locally owned entries) for the step @p dt;
+     * @p previous_dt is the length of the step before (equal to @p dt in the
+     * first step, where OTM sets x_p^{-1} = x_p^0 - dt v_p^0).
      */
     virtual void
     compute_nodal_velocities(NodalSystem<dim>             &system,
                              const MassMatrix<dim>        &mass_matrix,
                              const MaterialPoints<dim>    &material_points,
                              const ParticleShapeData<dim> &shape_data,
-                             const double                  dt) const = 0;
+                             const double                  dt,
+                             const double previous_dt) const = 0;
+
+    /**
+     * The particle-velocity update that belongs to this nodal update.
+     */
+    virtual ParticleVelocity
+    particle_velocity() const
+    {
+      return ParticleVelocity::from_acceleration;
+    }
   };
 } // namespace MpmOtm
 

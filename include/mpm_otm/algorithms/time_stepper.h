@@ -3,6 +3,7 @@
 
 #include <deal.II/base/timer.h>
 
+#include <mpm_otm/algorithms/grid_motion.h>
 #include <mpm_otm/algorithms/nodal_update.h>
 #include <mpm_otm/grid_system/mass_matrix.h>
 #include <mpm_otm/grid_system/nodal_system.h>
@@ -18,18 +19,25 @@ namespace MpmOtm
   class ShapeFunctions;
 
   /**
-   * One explicit time step, the same sequence for every method (journal
-   * Alg. 1 / thesis Fig. 2.5); the strategies passed in are the only
-   * differences between methods:
-   *  1. evaluate the shape functions at the material points (once per step);
-   *  2. assemble nodal masses, momenta and forces (Eqs. 19-21);
+   * One explicit time step, the same sequence for MPM, OTM and the unified
+   * approach (journal Algs. 1-3 and their comparison in Sect. 5; thesis
+   * Fig. 2.5). The strategies passed in are the only differences between
+   * the methods: where the shape functions live (GridMotion), the form of
+   * the nodal update (NodalUpdate) and the use of the mass matrix
+   * (MassMatrix).
+   *  1. evaluate the shape functions at the material points (once per step,
+   *     on the current grid);
+   *  2. assemble nodal masses, momenta and forces (Eqs. 19-21 / 48-50);
    *  3. solve the nodal accelerations with the mass-matrix strategy (Eq. 22);
-   *  4. advance the particle velocities, v_p += dt sum_i phi_i a_i (Eq. 27);
+   *  4. advance the particle velocities, v_p += dt sum_i phi_i a_i (Eq. 27),
+   *     if the nodal update asks for it (USL, MUSL, unified);
    *  5. nodal velocities v_i^{s+1} from the nodal-update strategy (USL,
-   *     MUSL);
-   *  6. move the points, x_p += dt sum_i phi_i v_i^{s+1} (Eq. 26), update
-   *     F_p (Eqs. 28-29), V_p (Eq. 30) and the stress (step 12);
-   *  7. find the cells of the moved points.
+   *     MUSL, OTM Eq. 51), the nodal displacement being dt v_i^{s+1};
+   *  6. move the points, x_p += dt sum_i phi_i v_i^{s+1} (Eqs. 26 / 52),
+   *     update F_p (Eqs. 28-29 / 55), V_p = det(F_p) V_p^0 (Eqs. 30 / 53)
+   *     and the stress; for OTM v_p = (x_p^{s+1} - x_p^s) / dt (Eq. 57);
+   *  7. move the grid with the nodes (OTM, unified) and find the cells of
+   *     the moved points (GridMotion).
    * A non-finite velocity or stress stops the run naming the point.
    */
   template <int dim>
@@ -41,6 +49,7 @@ namespace MpmOtm
                 NodalSystem<dim>          &system,
                 const MassMatrix<dim>     &mass_matrix,
                 const NodalUpdate<dim>    &nodal_update,
+                GridMotion<dim>           &grid_motion,
                 const Material<dim>       &material,
                 const Problem<dim>        &problem,
                 TimerOutput               &timer);
@@ -56,17 +65,23 @@ namespace MpmOtm
     advance_particle_velocities(const double dt);
 
     void
-    update_particles(const double dt);
+    update_particles(const double dt, const bool velocity_from_displacement);
 
     MaterialPoints<dim>       &material_points;
     const ShapeFunctions<dim> &shape_functions;
     NodalSystem<dim>          &system;
     const MassMatrix<dim>     &mass_matrix;
     const NodalUpdate<dim>    &nodal_update;
+    GridMotion<dim>           &grid_motion;
     const Material<dim>       &material;
     const Problem<dim>        &problem;
     TimerOutput               &timer;
     ParticleShapeData<dim>     data;
+
+    /**
+     * Length of the previous step (0 before the first).
+     */
+    double previous_dt = 0.;
   };
 } // namespace MpmOtm
 

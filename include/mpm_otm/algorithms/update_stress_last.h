@@ -21,7 +21,8 @@ namespace MpmOtm
                              const MassMatrix<dim>        &mass_matrix,
                              const MaterialPoints<dim>    &material_points,
                              const ParticleShapeData<dim> &shape_data,
-                             const double                  dt) const override;
+                             const double                  dt,
+                             const double previous_dt) const override;
   };
 } // namespace MpmOtm
 

@@ -41,10 +41,13 @@ namespace MpmOtm
     parse_parameters(ParameterHandler &prm);
 
     /**
-     * Build the triangulation and the mapping.
+     * Build the triangulation and the mapping. With @p vertices_move (OTM and
+     * the unified approach advect the vertices) quadrilaterals and hexahedra
+     * get the bilinear/trilinear MappingQ(1) instead of MappingCartesian,
+     * because moved cells are no longer axis-parallel boxes.
      */
     void
-    create(const MPI_Comm communicator);
+    create(const MPI_Comm communicator, const bool vertices_move = false);
 
     /**
      * The triangulation (distributed or serial).

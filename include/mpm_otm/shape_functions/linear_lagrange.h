@@ -39,6 +39,9 @@ namespace MpmOtm
     IndexSet
     boundary_functions(const types::boundary_id boundary_id) const override;
 
+    bool
+    is_linearly_complete() const override;
+
     /**
      * Values and reference-cell gradients of the 2^dim (hypercube) or dim + 1
      * (simplex) functions at reference point @p xi, in the order of the

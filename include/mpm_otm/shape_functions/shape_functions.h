@@ -58,6 +58,13 @@ namespace MpmOtm
      */
     virtual IndexSet
     boundary_functions(const types::boundary_id boundary_id) const = 0;
+
+    /**
+     * True if the functions reproduce linear fields, sum_i phi_i(x) x_i = x
+     * (journal Eq. 47); OTM's incremental map (Eq. 52) needs it.
+     */
+    virtual bool
+    is_linearly_complete() const = 0;
   };
 } // namespace MpmOtm
 

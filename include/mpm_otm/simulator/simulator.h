@@ -4,6 +4,7 @@
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
+#include <deal.II/dofs/dof_handler.h>
 
 #include <mpm_otm/io/statistics.h>
 
@@ -28,6 +29,8 @@ namespace MpmOtm
   class MassMatrix;
   template <int dim>
   class NodalUpdate;
+  template <int dim>
+  class GridMotion;
   template <int dim>
   class Material;
   template <int dim>
@@ -94,6 +97,18 @@ namespace MpmOtm
     material_points() const;
 
     /**
+     * The background grid (moved with the material in OTM and unified runs).
+     */
+    const BackgroundGrid<dim> &
+    background_grid() const;
+
+    /**
+     * The numbering of the shape functions.
+     */
+    const DoFHandler<dim> &
+    dof_handler() const;
+
+    /**
      * The nodal system of the last step.
      */
     const NodalSystem<dim> &
@@ -125,6 +140,7 @@ namespace MpmOtm
     std::unique_ptr<NodalSystem<dim>>    system;
     std::unique_ptr<MassMatrix<dim>>     mass_matrix;
     std::unique_ptr<NodalUpdate<dim>>    nodal_update;
+    std::unique_ptr<GridMotion<dim>>     grid_motion;
     std::unique_ptr<Material<dim>>       material;
     std::unique_ptr<Problem<dim>>        problem_description;
     std::unique_ptr<OutputWriter<dim>>   output;

@@ -1,0 +1,83 @@
+#ifndef mpm_otm_algorithms_advected_grid_h
+#define mpm_otm_algorithms_advected_grid_h
+
+#include <deal.II/grid/tria.h>
+
+#include <mpm_otm/algorithms/grid_motion.h>
+
+#include <vector>
+
+namespace MpmOtm
+{
+  /**
+   * The grid of OTM and the unified approach: the triangulation's vertices
+   * (the nodes x_i) are advected with the nodal displacements every step,
+   * x_i^{s+1} = x_i^s + dt v_i^{s+1} (journal Alg. 2, step 5; Alg. 3,
+   * step 6), so that the next step's shape functions phi_i^{s+1} are those of
+   * the moved grid. Only the vertex positions change: the DoF numbering,
+   * partition and index sets stay.
+   *
+   * The shape functions must have one function per vertex and no other
+   * (linear Lagrange). Then a material point moved by sum_i phi_i dt v_i
+   * keeps its reference coordinates in its cell (the isoparametric map of
+   * the moved cell at the same reference point), so points never change cell
+   * or rank and no search is needed.
+   *
+   * Before the vertices move, every locally owned cell is checked: a cell
+   * whose Jacobian would change sign at one of its vertices stops the run
+   * with the cell and its position, and the grid is left as it was.
+   */
+  template <int dim>
+  class AdvectedGrid : public GridMotion<dim>
+  {
+  public:
+    bool
+    moves_vertices() const override;
+
+    void
+    initialize(BackgroundGrid<dim>       &grid,
+               const ShapeFunctions<dim> &shape_functions,
+               const NodalSystem<dim>    &system) override;
+
+    void
+    advance(const NodalSystem<dim> &system,
+            MaterialPoints<dim>    &material_points,
+            const double            dt) override;
+
+  private:
+    /**
+     * Smallest Jacobian determinant over the vertices of a cell with the
+     * given corner positions (deal.II's vertex order), times @p orientation.
+     */
+    static double
+    smallest_vertex_jacobian(const Point<dim> *const corners[],
+                             const unsigned int      n_corners,
+                             const double            orientation);
+
+    Triangulation<dim> *triangulation = nullptr;
+
+    /**
+     * Each vertex of a locally owned or ghost cell once: where its position
+     * is stored and the local index of its shape function.
+     */
+    std::vector<Point<dim> *> vertex_positions;
+    std::vector<unsigned int> vertex_functions;
+
+    /**
+     * For each locally owned cell: its indices into vertex_positions
+     * (vertices_per_cell of them), its iterator for messages and the sign of
+     * its initial Jacobian.
+     */
+    unsigned int              vertices_per_cell = 0;
+    std::vector<unsigned int> owned_cell_vertices;
+    std::vector<typename Triangulation<dim>::active_cell_iterator> owned_cells;
+    std::vector<double>                                            orientations;
+
+    /**
+     * Work array: the vertex positions after the step.
+     */
+    std::vector<Point<dim>> moved_positions;
+  };
+} // namespace MpmOtm
+
+#endif

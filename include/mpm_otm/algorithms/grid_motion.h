@@ -1,0 +1,57 @@
+#ifndef mpm_otm_algorithms_grid_motion_h
+#define mpm_otm_algorithms_grid_motion_h
+
+#include <mpm_otm/grid_system/nodal_system.h>
+
+namespace MpmOtm
+{
+  template <int dim>
+  class BackgroundGrid;
+  template <int dim>
+  class MaterialPoints;
+  template <int dim>
+  class ShapeFunctions;
+
+  /**
+   * Where the shape functions live, the first of the two differences
+   * between MPM and OTM/the unified approach (journal Sect. 5, step 3): on
+   * the initial grid, which stays fixed while the material points move
+   * through it (MPM, FixedGrid), or on nodes that are advected with the
+   * material every step (OTM and unified, AdvectedGrid). Called at the end
+   * of each time step, after the material points have moved, to bring the
+   * grid and the points' cell bookkeeping to the new configuration.
+   */
+  template <int dim>
+  class GridMotion
+  {
+  public:
+    virtual ~GridMotion() = default;
+
+    /**
+     * True if the grid's vertices move (the grid then needs a mapping that
+     * is not restricted to axis-parallel boxes).
+     */
+    virtual bool
+    moves_vertices() const = 0;
+
+    /**
+     * Prepare for @p grid with the functions @p shape_functions, numbered
+     * as in @p system (called once, after the nodal system is set up).
+     */
+    virtual void
+    initialize(BackgroundGrid<dim>       &grid,
+               const ShapeFunctions<dim> &shape_functions,
+               const NodalSystem<dim>    &system) = 0;
+
+    /**
+     * Move the grid by dt times the nodal velocities of @p system (ghost
+     * values up to date) and find the cells of the moved material points.
+     */
+    virtual void
+    advance(const NodalSystem<dim> &system,
+            MaterialPoints<dim>    &material_points,
+            const double            dt) = 0;
+  };
+} // namespace MpmOtm
+
+#endif

@@ -1,0 +1,184 @@
+#include <deal.II/fe/fe.h>
+
+#include <mpm_otm/algorithms/advected_grid.h>
+#include <mpm_otm/grid_system/background_grid.h>
+#include <mpm_otm/shape_functions/shape_functions.h>
+
+#include <limits>
+#include <sstream>
+
+namespace MpmOtm
+{
+  template <int dim>
+  bool
+  AdvectedGrid<dim>::moves_vertices() const
+  {
+    return true;
+  }
+
+
+
+  template <int dim>
+  void
+  AdvectedGrid<dim>::initialize(BackgroundGrid<dim>       &grid,
+                                const ShapeFunctions<dim> &shape_functions,
+                                const NodalSystem<dim>    &system)
+  {
+    const DoFHandler<dim>    &dofs = shape_functions.dof_handler();
+    const FiniteElement<dim> &fe   = dofs.get_fe();
+    vertices_per_cell              = fe.reference_cell().n_vertices();
+    AssertThrow(fe.n_dofs_per_vertex() == 1 &&
+                  fe.n_dofs_per_cell() == vertices_per_cell,
+                ExcMessage("Method = OTM or Unified moves the grid's vertices "
+                           "with the coefficients of the shape functions, "
+                           "which needs exactly one function per vertex "
+                           "(Shape functions = linear)."));
+
+    triangulation                                  = &grid.triangulation();
+    const Utilities::MPI::Partitioner &partitioner = system.partitioner();
+    std::vector<unsigned int> position_of_vertex(triangulation->n_vertices(),
+                                                 numbers::invalid_unsigned_int);
+    vertex_positions.clear();
+    vertex_functions.clear();
+    owned_cell_vertices.clear();
+    owned_cells.clear();
+    orientations.clear();
+
+    for (const auto &cell : dofs.active_cell_iterators())
+      {
+        if (cell->is_artificial())
+          continue;
+        for (const unsigned int v : cell->vertex_indices())
+          {
+            unsigned int &position = position_of_vertex[cell->vertex_index(v)];
+            if (position == numbers::invalid_unsigned_int)
+              {
+                position = vertex_positions.size();
+                vertex_positions.push_back(&cell->vertex(v));
+                vertex_functions.push_back(
+                  partitioner.global_to_local(cell->vertex_dof_index(v, 0)));
+              }
+            if (cell->is_locally_owned())
+              owned_cell_vertices.push_back(position);
+          }
+        if (cell->is_locally_owned())
+          {
+            owned_cells.emplace_back(triangulation,
+                                     cell->level(),
+                                     cell->index());
+            const Point<dim> *corners[GeometryInfo<dim>::vertices_per_cell];
+            for (unsigned int v = 0; v < vertices_per_cell; ++v)
+              corners[v] = &cell->vertex(v);
+            orientations.push_back(
+              smallest_vertex_jacobian(corners, vertices_per_cell, 1.) > 0 ?
+                1. :
+                -1.);
+          }
+      }
+    moved_positions.resize(vertex_positions.size());
+  }
+
+
+
+  template <int dim>
+  double
+  AdvectedGrid<dim>::smallest_vertex_jacobian(const Point<dim> *const corners[],
+                                              const unsigned int      n_corners,
+                                              const double orientation)
+  {
+    Tensor<2, dim> jacobian;
+    if (n_corners != GeometryInfo<dim>::vertices_per_cell)
+      {
+        // Simplex: constant Jacobian with columns x_{d+1} - x_0.
+        for (unsigned int d = 0; d < dim; ++d)
+          for (unsigned int a = 0; a < dim; ++a)
+            jacobian[a][d] = (*corners[d + 1])[a] - (*corners[0])[a];
+        return orientation * determinant(jacobian);
+      }
+
+    // Hypercube: at vertex i the column for direction d is the edge from the
+    // vertex with bit d cleared to the one with bit d set.
+    double smallest = std::numeric_limits<double>::max();
+    for (unsigned int i = 0; i < n_corners; ++i)
+      {
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            const Point<dim> &upper = *corners[i | (1u << d)];
+            const Point<dim> &lower = *corners[i & ~(1u << d)];
+            for (unsigned int a = 0; a < dim; ++a)
+              jacobian[a][d] = upper[a] - lower[a];
+          }
+        smallest = std::min(smallest, orientation * determinant(jacobian));
+      }
+    return smallest;
+  }
+
+
+
+  template <int dim>
+  void
+  AdvectedGrid<dim>::advance(const NodalSystem<dim> &system,
+                             MaterialPoints<dim> &,
+                             const double dt)
+  {
+    const double *velocity[dim];
+    for (unsigned int c = 0; c < dim; ++c)
+      velocity[c] = system.velocity[c].get_values();
+    for (unsigned int k = 0; k < vertex_positions.size(); ++k)
+      {
+        moved_positions[k] = *vertex_positions[k];
+        for (unsigned int c = 0; c < dim; ++c)
+          moved_positions[k][c] += dt * velocity[c][vertex_functions[k]];
+      }
+
+    std::string inverted;
+    for (unsigned int k = 0; k < owned_cells.size() && inverted.empty(); ++k)
+      {
+        const Point<dim> *corners[GeometryInfo<dim>::vertices_per_cell];
+        Point<dim>        centre;
+        for (unsigned int v = 0; v < vertices_per_cell; ++v)
+          {
+            corners[v] =
+              &moved_positions[owned_cell_vertices[k * vertices_per_cell + v]];
+            centre += *corners[v] / vertices_per_cell;
+          }
+        if (smallest_vertex_jacobian(corners,
+                                     vertices_per_cell,
+                                     orientations[k]) <= 0.)
+          {
+            std::ostringstream message;
+            message << "cell " << owned_cells[k]->id() << " (centre (" << centre
+                    << ") after the step) would invert. ";
+            inverted = message.str();
+          }
+      }
+    const MPI_Comm communicator = triangulation->get_communicator();
+    if (Utilities::MPI::max(inverted.empty() ? 0 : 1, communicator) > 0)
+      {
+        std::string all;
+        for (const auto &part :
+             Utilities::MPI::all_gather(communicator, inverted))
+          all += part;
+        AssertThrow(false,
+                    ExcMessage(
+                      "The moving grid became invalid: " + all +
+                      "Its Jacobian would be non-positive at a vertex after "
+                      "the vertices move by the nodal displacements (the "
+                      "grid is left at the start of the step). The material "
+                      "deforms more than a grid that moves with it can "
+                      "follow: use Method = MPM (fixed grid) for such "
+                      "deformations, or reduce Time/Time step if the motion "
+                      "per step is too large."));
+      }
+
+    for (unsigned int k = 0; k < vertex_positions.size(); ++k)
+      *vertex_positions[k] = moved_positions[k];
+    triangulation->signals.mesh_movement();
+  }
+
+
+
+  template class AdvectedGrid<1>;
+  template class AdvectedGrid<2>;
+  template class AdvectedGrid<3>;
+} // namespace MpmOtm

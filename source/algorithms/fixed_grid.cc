@@ -1,0 +1,38 @@
+#include <mpm_otm/algorithms/fixed_grid.h>
+#include <mpm_otm/material_points/material_points.h>
+
+namespace MpmOtm
+{
+  template <int dim>
+  bool
+  FixedGrid<dim>::moves_vertices() const
+  {
+    return false;
+  }
+
+
+
+  template <int dim>
+  void
+  FixedGrid<dim>::initialize(BackgroundGrid<dim> &,
+                             const ShapeFunctions<dim> &,
+                             const NodalSystem<dim> &)
+  {}
+
+
+
+  template <int dim>
+  void
+  FixedGrid<dim>::advance(const NodalSystem<dim> &,
+                          MaterialPoints<dim> &material_points,
+                          const double)
+  {
+    material_points.locate();
+  }
+
+
+
+  template class FixedGrid<1>;
+  template class FixedGrid<2>;
+  template class FixedGrid<3>;
+} // namespace MpmOtm
