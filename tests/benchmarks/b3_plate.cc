@@ -1,9 +1,10 @@
-// B3 with MPM-P1 (journal Sect. 8.3, Fig. 9) from
-// prm/B3-plate-manufactured.prm: the run reaches T = 3.5e-3, writes the
-// sigma11 profile of the particle row X2 ~ 0.07 (particles-00035.csv), and
-// its displacement error stays small against the amplitude A = 0.005 while
-// the stress error shows the piecewise-constant P1 stress (journal: MPM-P1
-// far from the exact stress).
+// B3 with MPM-P1 and OTM-P1 (journal Sect. 8.3, Fig. 9) from
+// prm/B3-plate-manufactured.prm and prm/B3-plate-manufactured-otm.prm: each
+// run reaches T = 3.5e-3, writes the sigma11 profile of the particle row
+// X2 ~ 0.07 (particles-00035.csv), and its displacement error stays small
+// against the amplitude A = 0.005. Published behaviour: P1 gives a
+// piecewise-constant stress, MPM-P1 far off because of grid crossing, OTM-P1
+// without grid-crossing errors.
 
 #include <mpm_otm/material_points/material_points.h>
 #include <mpm_otm/problems/problem.h>
@@ -15,49 +16,85 @@
 using namespace MpmOtm;
 using namespace MpmOtmTests;
 
+namespace
+{
+  struct Profile
+  {
+    unsigned int n_points           = 0;
+    double       largest_deviation  = 0;
+    double       largest_exact      = 0;
+    double       displacement_error = 0;
+  };
+
+  // Run @p prm to T and read the sigma11 profile of the row Y = 0.06640625
+  // from its particles-00035.csv.
+  Profile
+  run(const std::string &prm, const std::string &directory)
+  {
+    auto    simulator = make_simulator<2>(prm,
+                                       "subsection Output\n set Interval = 0\n"
+                                          "end",
+                                       directory);
+    Profile profile;
+    profile.displacement_error = simulator->run().displacement_rms_error;
+    check(std::abs(simulator->time() - 3.5e-3) < 1e-15, "did not reach T");
+
+    std::ifstream csv(directory + "/particles-00035.csv");
+    std::string   line;
+    std::getline(csv, line);
+    check(line == "id,X,Y,x,y,ux,uy,vx,vy,sxx,syy,sxy,volume,mass",
+          "unexpected CSV header " + line);
+    while (std::getline(csv, line))
+      {
+        std::vector<double> values;
+        std::stringstream   fields(line);
+        std::string         field;
+        while (std::getline(fields, field, ','))
+          values.push_back(std::stod(field));
+        if (std::abs(values[2] - 0.06640625) > 1e-9)
+          continue;
+        const Point<2> X(values[1], values[2]);
+        const double exact = simulator->problem().exact_stress(X, 3.5e-3)[0][0];
+        profile.largest_deviation =
+          std::max(profile.largest_deviation, std::abs(values[9] - exact));
+        profile.largest_exact =
+          std::max(profile.largest_exact, std::abs(exact));
+        ++profile.n_points;
+      }
+    check(profile.n_points == 128, "the profile row should hold 128 particles");
+    deallog << prm << ": sigma11 profile of " << profile.n_points
+            << " points, largest deviation " << std::fixed
+            << std::setprecision(0)
+            << 100. * profile.largest_deviation / profile.largest_exact
+            << " % of the largest exact stress; RMS displacement error / A "
+            << std::setprecision(1) << 100. * profile.displacement_error / 0.005
+            << " %" << std::defaultfloat << std::endl;
+    return profile;
+  }
+} // namespace
+
+
+
 int
 main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   initlog();
-  auto       simulator  = make_simulator<2>("B3-plate-manufactured.prm",
-                                     "subsection Output\n set Interval = 0\n"
-                                            "end",
-                                     "output-B3");
-  const auto statistics = simulator->run();
-  check(std::abs(simulator->time() - 3.5e-3) < 1e-15, "did not reach T");
+  const Profile mpm = run("B3-plate-manufactured.prm", "output-B3");
+  check(mpm.displacement_error < 0.03 * 0.005,
+        "MPM-P1: displacement error above 3 % of the amplitude");
+  check(mpm.largest_deviation < 0.5 * mpm.largest_exact,
+        "MPM-P1: sigma11 deviates by more than 50 %");
 
-  // The sigma11 profile: rows of particles-00035.csv with Y = 0.06640625.
-  std::ifstream csv("output-B3/particles-00035.csv");
-  std::string   line;
-  std::getline(csv, line);
-  check(line == "id,X,Y,x,y,ux,uy,vx,vy,sxx,syy,sxy,volume,mass",
-        "unexpected CSV header " + line);
-  unsigned int n_row = 0;
-  double       worst = 0, largest = 0;
-  while (std::getline(csv, line))
-    {
-      std::vector<double> values;
-      std::stringstream   fields(line);
-      std::string         field;
-      while (std::getline(fields, field, ','))
-        values.push_back(std::stod(field));
-      if (std::abs(values[2] - 0.06640625) > 1e-9)
-        continue;
-      const Point<2> X(values[1], values[2]);
-      const double   exact = simulator->problem().exact_stress(X, 3.5e-3)[0][0];
-      worst                = std::max(worst, std::abs(values[9] - exact));
-      largest              = std::max(largest, std::abs(exact));
-      ++n_row;
-    }
-  check(n_row == 128, "the profile row should hold 128 particles");
-  check(statistics.displacement_rms_error < 0.03 * 0.005,
-        "displacement error above 3 % of the amplitude");
-  check(worst < 0.5 * largest, "sigma11 deviates by more than 50 %");
-  deallog << "sigma11 profile: " << n_row << " points, largest deviation "
-          << std::fixed << std::setprecision(0) << 100. * worst / largest
-          << " % of the largest exact stress" << std::endl;
-  deallog << "RMS displacement error / A: " << std::setprecision(1)
-          << 100. * statistics.displacement_rms_error / 0.005 << " %"
-          << std::endl;
+  // OTM-P1: no grid crossing, so only the piecewise-constant P1 stress is
+  // left. Over a cell of width h = 1/32 the exact sigma11 ~ cos(2 pi X1)
+  // changes by at most 2 pi h = 20 % of its amplitude, so a cell-wise
+  // constant stress deviates from it by at most about half of that.
+  const Profile otm = run("B3-plate-manufactured-otm.prm", "output-B3-otm");
+  check(otm.largest_deviation < 0.1 * otm.largest_exact,
+        "OTM-P1: sigma11 deviates by more than the P1 bound of 10 %");
+  check(otm.largest_deviation < 0.5 * mpm.largest_deviation,
+        "OTM-P1 stress should be far closer than MPM-P1's");
+  check(otm.displacement_error < 0.5 * mpm.displacement_error,
+        "OTM-P1 displacement error should be below MPM-P1's");
 }
