@@ -268,7 +268,8 @@ namespace MpmOtm
 
   template <int dim>
   Statistics<dim>
-  Simulator<dim>::run(const std::function<void(unsigned int)> &observer)
+  Simulator<dim>::run(
+    const std::function<void(unsigned int, const Statistics<dim> &)> &observer)
   {
     TimerOutput      timer(communicator,
                       pcout,
@@ -311,7 +312,7 @@ namespace MpmOtm
             << "  wall time = " << std::fixed << std::setprecision(2)
             << wall_clock.wall_time() << " s" << std::defaultfloat << std::endl;
       if (observer)
-        observer(step);
+        observer(step, statistics);
     };
 
     report(0);

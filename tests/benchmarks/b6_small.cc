@@ -29,7 +29,7 @@ main(int argc, char **argv)
       std::max(top, particle.get_properties()[Layout::initial_position + 1]);
 
   double max_error = 0, max_exact = 0;
-  simulator->run([&](const unsigned int step) {
+  simulator->run([&](const unsigned int step, const Statistics<2> &) {
     const double t   = simulator->time();
     double       sum = 0, exact = 0;
     unsigned int n = 0;

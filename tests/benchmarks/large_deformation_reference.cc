@@ -61,7 +61,7 @@ namespace
       changes + "subsection Output\n set Write particle CSV = false\nend\n",
       directory);
     std::vector<double> values;
-    simulator->run([&](unsigned int) {
+    simulator->run([&](unsigned int, const Statistics<1> &) {
       values.push_back(mean_displacement(*simulator, from, to));
     });
     return values;

@@ -8,9 +8,9 @@
 // the traction of a step is the one at its start, so after n steps of dt
 // the traction impulse is 2 * 3 dt^2 n (n - 1) / 2.
 
-#include <mpm_otm/io/statistics.h>
+#include <mpm_otm/material_points/material_points.h>
 
-#include "components.h"
+#include "../tests.h"
 
 using namespace MpmOtm;
 using namespace MpmOtmTests;
@@ -24,15 +24,16 @@ main(int argc, char **argv)
     for (const std::string mass : {"lumped", "consistent"})
       for (const std::string scheme : {"USL", "MUSL"})
         {
-          Components<2> setup(R"(
+          auto                simulator = make_simulator<2>("",
+                                             R"(
 set Dimension = 2
 set Problem = custom
 set Update scheme = )" + scheme +
-                              R"(
+                                               R"(
 set Mass matrix = )" + mass + R"(
 subsection Mesh
   set Cell type = )" + cell_type +
-                              R"(
+                                               R"(
   set Lower corner = 0, 0
   set Upper corner = 4, 4
   set Subdivisions = 8, 8
@@ -52,12 +53,21 @@ subsection Custom problem
   # rigid rotation about (2, 2) plus a translation and a stretch
   set Initial velocity = 0.3 - 0.5*(y-2) + 0.1*(x-2); 0.2 + 0.5*(x-2)
 end
-)");
-          Statistics<2> before, after;
-          before.compute(setup.points, *setup.material, *setup.problem, 0.);
-          for (unsigned int step = 0; step < 50; ++step)
-            setup.stepper->advance(step * 1e-3, 1e-3);
-          after.compute(setup.points, *setup.material, *setup.problem, 0.05);
+subsection Time
+  set End time = 0.05
+  set Time step = 1e-3
+end
+subsection Output
+  set Interval = 0
+end
+)",
+                                             "output-free-body");
+          Statistics<2>       before;
+          const Statistics<2> after = simulator->run(
+            [&](const unsigned int step, const Statistics<2> &statistics) {
+              if (step == 0)
+                before = statistics;
+            });
           const double scale =
             std::abs(before.momentum[0]) + std::abs(before.momentum[1]);
           const double momentum_change =
@@ -69,14 +79,18 @@ end
           check(momentum_change < 1e-12 * scale,
                 label + ": momentum changed by " +
                   std::to_string(momentum_change / scale));
-          check(setup.points.n_global_points() == 4 * 4 * 9,
+          check(simulator->material_points().n_global_points() == 4 * 4 * 9,
                 label + ": material points were lost");
           deallog << label << ": mass " << after.total_mass
                   << ", momentum conserved to 1e-12, "
-                  << setup.points.n_global_points() << " points" << std::endl;
+                  << simulator->material_points().n_global_points() << " points"
+                  << std::endl;
         }
 
-  Components<2>      loaded(R"(
+  const double        dt      = 1e-3;
+  const unsigned int  n_steps = 40;
+  auto                loaded  = make_simulator<2>("",
+                                  R"(
 set Dimension = 2
 set Problem = custom
 subsection Mesh
@@ -97,14 +111,17 @@ subsection Custom problem
   set Traction boundary ids = 1
   set Traction = 3*t; 0
 end
-)");
-  const double       dt      = 1e-3;
-  const unsigned int n_steps = 40;
-  for (unsigned int step = 0; step < n_steps; ++step)
-    loaded.stepper->advance(step * dt, dt);
-  Statistics<2> state;
-  state.compute(loaded.points, *loaded.material, *loaded.problem, n_steps * dt);
-  const double mass       = 4.;
+subsection Time
+  set End time = 0.04
+  set Time step = 1e-3
+end
+subsection Output
+  set Interval = 0
+end
+)",
+                                  "output-loaded");
+  const Statistics<2> state   = loaded->run();
+  const double        mass    = 4.;
   const double expected_x = 2. * 3. * dt * dt * n_steps * (n_steps - 1) / 2.;
   const double expected_y = -2. * mass * n_steps * dt;
   const double error_x    = std::abs(state.momentum[0] - expected_x);

@@ -1,17 +1,22 @@
 // The closed-form linear functions: equal to deal.II's FE_Q(1) and
 // FE_SimplexP(1) at random reference points, partition of unity, and linear
-// reproduction at the material points of real grids (1D, quadrilaterals,
-// hexahedra, triangles, tetrahedra).
+// reproduction (values and gradients) at the material points of real grids
+// (1D, quadrilaterals, hexahedra, triangles, tetrahedra), both on the initial
+// grid and on a grid that OTM has moved and distorted (the isoparametric
+// functions reproduce linear fields on any non-inverted cell).
 
 #include <deal.II/base/partitioner.h>
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_simplex_p.h>
 
+#include <mpm_otm/grid_system/background_grid.h>
+#include <mpm_otm/grid_system/nodal_system.h>
+#include <mpm_otm/material_points/material_points.h>
 #include <mpm_otm/shape_functions/linear_lagrange.h>
 
 #include <random>
 
-#include "components.h"
+#include "../tests.h"
 
 using namespace MpmOtm;
 using namespace MpmOtmTests;
@@ -67,32 +72,60 @@ test_reference(const bool simplex)
 
 template <int dim>
 void
-test_reproduction(const std::string &cell_type)
+test_reproduction(const std::string &cell_type, const bool moved)
 {
   const std::string corner = (dim == 1 ? "0" : dim == 2 ? "0, 0" : "0, 0, 0");
   const std::string upper  = (dim == 1 ? "2" :
                               dim == 2 ? "2, 1.5" :
                                          "2, 1.5, 1");
   const std::string blocks = (dim == 1 ? "5" : dim == 2 ? "5, 3" : "3, 2, 2");
-  Components<dim> setup("set Dimension = " + std::to_string(dim) + R"(
+  // A shearing, stretching initial velocity; 20 OTM steps distort the grid.
+  const std::string velocity =
+    (dim == 1 ? "0.3 * sin(x)" :
+     dim == 2 ? "0.3 * sin(y) + 0.1 * x; 0.3 * sin(x)" :
+                "0.3 * sin(y); 0.3 * sin(z); 0.3 * sin(x)");
+  auto simulator = make_simulator<dim>("",
+                                       "set Dimension = " +
+                                         std::to_string(dim) + R"(
 set Problem = custom
+set Method = OTM
+set Mass matrix = consistent
+subsection Time
+  set End time = 0.2
+  set Time step = 0.01
+end
+subsection Material
+  set Young's modulus = 1
+  set Density = 1
+end
+subsection Custom problem
+  set Initial velocity = )" + velocity + R"(
+end
 subsection Mesh
   set Cell type = )" + cell_type +
-                        R"(
-  set Lower corner = )" +
-                        corner + R"(
-  set Upper corner = )" +
-                        upper + R"(
-  set Subdivisions = )" +
-                        blocks + R"(
+                                         R"(
+  set Lower corner = )" + corner + R"(
+  set Upper corner = )" + upper + R"(
+  set Subdivisions = )" + blocks + R"(
 end
 subsection Particles
   set Particles per cell = 3
 end
-)");
+)",
+                                       "output-" + std::to_string(dim) + "d-" +
+                                         cell_type);
+  if (moved)
+    simulator->run();
+
+  // The family under test, on the simulator's (possibly moved) grid; its
+  // numbering is the simulator's.
+  LinearLagrange<dim> shape_functions;
+  shape_functions.initialize(simulator->background_grid());
+  const auto &dofs        = shape_functions.dof_handler();
+  const auto &partitioner = simulator->nodal_system().partitioner();
+  const auto &points      = simulator->material_points();
+
   // Nodal values of f(x) = 1 + sum_d (d + 2) x_d at the vertices.
-  const auto         &dofs        = setup.shape_functions->dof_handler();
-  const auto         &partitioner = setup.system.partitioner();
   std::vector<double> nodal(partitioner.locally_owned_size() +
                             partitioner.n_ghost_indices());
   Tensor<1, dim>      slope;
@@ -108,10 +141,10 @@ end
     }
 
   ParticleShapeData<dim> data;
-  setup.shape_functions->evaluate(setup.points, partitioner, data);
+  shape_functions.evaluate(points, partitioner, data);
   double       max_error = 0;
   unsigned int k         = 0;
-  for (const auto &particle : setup.points.particle_handler())
+  for (const auto &particle : points.particle_handler())
     {
       double         value = 0;
       Tensor<1, dim> gradient;
@@ -128,8 +161,19 @@ end
     }
   check(max_error < 1e-12,
         "linear function not reproduced: error " + std::to_string(max_error));
-  deallog << dim << "D " << cell_type << ": linear reproduction at "
-          << setup.points.n_global_points() << " points" << std::endl;
+  double largest_motion = 0;
+  for (const auto &particle : points.particle_handler())
+    largest_motion = std::max(largest_motion,
+                              (particle.get_location() -
+                               Point<dim>(PropertyLayout<dim>::get_vector(
+                                 particle.get_properties(),
+                                 PropertyLayout<dim>::initial_position)))
+                                .norm());
+  check(moved == (largest_motion > 1e-2), "the grid should have moved");
+  deallog << dim << "D " << cell_type
+          << (moved ? ", grid moved by OTM" : ", initial grid")
+          << ": linear reproduction at " << points.n_global_points()
+          << " points" << std::endl;
 }
 
 int
@@ -142,9 +186,12 @@ main(int argc, char **argv)
   test_reference<3>(false);
   test_reference<2>(true);
   test_reference<3>(true);
-  test_reproduction<1>("hypercube");
-  test_reproduction<2>("hypercube");
-  test_reproduction<3>("hypercube");
-  test_reproduction<2>("simplex");
-  test_reproduction<3>("simplex");
+  for (const bool moved : {false, true})
+    {
+      test_reproduction<1>("hypercube", moved);
+      test_reproduction<2>("hypercube", moved);
+      test_reproduction<3>("hypercube", moved);
+      test_reproduction<2>("simplex", moved);
+      test_reproduction<3>("simplex", moved);
+    }
 }

@@ -10,9 +10,10 @@
 //   0.05, V = 1.05.
 // Second step: f = -sum_p V_p sigma_p dphi_i/dx = (0.0525, 0, -0.0525).
 
-#include <mpm_otm/material_points/property_layout.h>
+#include <mpm_otm/grid_system/nodal_system.h>
+#include <mpm_otm/material_points/material_points.h>
 
-#include "components.h"
+#include "../tests.h"
 
 using namespace MpmOtm;
 using namespace MpmOtmTests;
@@ -22,6 +23,13 @@ set Dimension = 1
 set Problem = custom
 set Update scheme = USL
 set Mass matrix = lumped
+subsection Time
+  set End time = 0.2
+  set Time step = 0.1
+end
+subsection Output
+  set Interval = 1
+end
 subsection Mesh
   set Lower corner = 0
   set Upper corner = 2
@@ -55,65 +63,81 @@ main(int argc, char **argv)
   initlog();
   using Layout = PropertyLayout<1>;
   {
-    Components<1> setup(parameters);
-    auto         &system = setup.system;
-    const double  dt     = 0.1;
-    setup.stepper->advance(0., dt);
-    for (unsigned int i = 0; i < 3; ++i)
-      {
-        const double mass[3]     = {0.5, 1., 0.5};
-        const double momentum[3] = {0.25, 1., 0.75};
-        const double velocity[3] = {0.5, 1., 1.5};
-        expect("step 1 mass " + std::to_string(i),
-               system.lumped_mass.local_element(i),
-               mass[i]);
-        expect("step 1 momentum " + std::to_string(i),
-               system.momentum[0].local_element(i),
-               momentum[i]);
-        expect("step 1 force " + std::to_string(i),
-               system.force[0].local_element(i),
-               0.);
-        expect("step 1 velocity " + std::to_string(i),
-               system.velocity[0].local_element(i),
-               velocity[i]);
-      }
-    for (const auto &particle : setup.points.particle_handler())
-      {
-        const auto   properties = particle.get_properties();
-        const double X          = properties[Layout::initial_position];
-        const double moved      = (X < 1 ? 0.75 : 1.25) * dt;
-        expect("point " + std::to_string(X) + " position",
-               particle.get_location()[0],
-               X + moved);
-        expect("point " + std::to_string(X) + " stress",
-               properties[Layout::stress],
-               0.05);
-        expect("point " + std::to_string(X) + " volume",
-               properties[Layout::volume],
-               1.05);
-      }
-    setup.stepper->advance(dt, dt);
-    const double force[3] = {1.05 * 0.05, 0., -1.05 * 0.05};
-    for (unsigned int i = 0; i < 3; ++i)
-      expect("step 2 force " + std::to_string(i),
-             system.force[0].local_element(i),
-             force[i]);
+    auto simulator      = make_simulator<1>("", parameters, "output-two-steps");
+    const auto  &system = simulator->nodal_system();
+    const double dt     = 0.1;
+    unsigned int observed = 0;
+    simulator->run([&](const unsigned int step, const Statistics<1> &) {
+      observed += step;
+      if (step == 1)
+        {
+          for (unsigned int i = 0; i < 3; ++i)
+            {
+              const double mass[3]     = {0.5, 1., 0.5};
+              const double momentum[3] = {0.25, 1., 0.75};
+              const double velocity[3] = {0.5, 1., 1.5};
+              expect("step 1 mass " + std::to_string(i),
+                     system.lumped_mass.local_element(i),
+                     mass[i]);
+              expect("step 1 momentum " + std::to_string(i),
+                     system.momentum[0].local_element(i),
+                     momentum[i]);
+              expect("step 1 force " + std::to_string(i),
+                     system.force[0].local_element(i),
+                     0.);
+              expect("step 1 velocity " + std::to_string(i),
+                     system.velocity[0].local_element(i),
+                     velocity[i]);
+            }
+          for (const auto &particle :
+               simulator->material_points().particle_handler())
+            {
+              const auto   properties = particle.get_properties();
+              const double X          = properties[Layout::initial_position];
+              const double moved      = (X < 1 ? 0.75 : 1.25) * dt;
+              expect("point " + std::to_string(X) + " position",
+                     particle.get_location()[0],
+                     X + moved);
+              expect("point " + std::to_string(X) + " stress",
+                     properties[Layout::stress],
+                     0.05);
+              expect("point " + std::to_string(X) + " volume",
+                     properties[Layout::volume],
+                     1.05);
+            }
+        }
+      if (step == 2)
+        {
+          const double force[3] = {1.05 * 0.05, 0., -1.05 * 0.05};
+          for (unsigned int i = 0; i < 3; ++i)
+            expect("step 2 force " + std::to_string(i),
+                   system.force[0].local_element(i),
+                   force[i]);
+        }
+    });
+    check(observed == 1 + 2, "steps 1 and 2 must both be checked");
   }
   {
     // Four points per cell make the consistent mass matrix regular; the L2
     // projection of the linear velocity v = x onto the linear functions is
     // exact, so M^-1 q gives the nodal values 0, 1, 2.
-    Components<1> setup(parameters + R"(
+    auto simulator = make_simulator<1>("",
+                                       parameters + R"(
 set Mass matrix = consistent
+subsection Time
+  set End time = 1e-3
+  set Time step = 1e-3
+end
 subsection Particles
   set Particles per cell = 4
 end
-)");
+)",
+                                       "output-consistent");
     // No stress yet, so a = 0 and the USL velocities are M^-1 q.
-    setup.stepper->advance(0., 1e-3);
+    simulator->run();
     for (unsigned int i = 0; i < 3; ++i)
       expect("consistent projection of v = x, node " + std::to_string(i),
-             setup.system.velocity[0].local_element(i),
+             simulator->nodal_system().velocity[0].local_element(i),
              1. * i);
   }
 }

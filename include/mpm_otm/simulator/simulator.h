@@ -84,11 +84,12 @@ namespace MpmOtm
 
     /**
      * Run all time steps to the end time; returns the statistics at the end.
-     * @p observer, if given, is called with the step number after the output
-     * of every output step (step 0 included).
+     * @p observer, if given, is called with the step number and the
+     * statistics after the output of every output step (step 0 included).
      */
     Statistics<dim>
-    run(const std::function<void(unsigned int)> &observer = {});
+    run(const std::function<void(unsigned int, const Statistics<dim> &)>
+          &observer = {});
 
     /**
      * The material points (for tests and post-processing).
