@@ -2,6 +2,7 @@
 
 #include <mpm_otm/algorithms/advected_grid.h>
 #include <mpm_otm/grid_system/background_grid.h>
+#include <mpm_otm/problems/problem.h>
 #include <mpm_otm/shape_functions/shape_functions.h>
 
 #include <limits>
@@ -14,6 +15,78 @@ namespace MpmOtm
   AdvectedGrid<dim>::moves_vertices() const
   {
     return true;
+  }
+
+
+
+  template <int dim>
+  bool
+  AdvectedGrid<dim>::tractions_on_grid_faces() const
+  {
+    return true;
+  }
+
+
+
+  template <int dim>
+  double
+  AdvectedGrid<dim>::measure(
+    const unsigned int n_vertices,
+    const std::array<unsigned int, GeometryInfo<dim>::vertices_per_face>
+      &vertices) const
+  {
+    const auto corner = [&](const unsigned int v) -> const Point<dim> & {
+      return *vertex_positions[vertices[v]];
+    };
+    if constexpr (dim == 1)
+      return 1.;
+    else if constexpr (dim == 2)
+      return (corner(1) - corner(0)).norm();
+    else
+      {
+        // Triangle: half the cross product of two edges; quadrilateral
+        // (vertices in deal.II's lexicographic order): half the cross
+        // product of its diagonals.
+        if (n_vertices == 3)
+          return 0.5 *
+                 cross_product_3d(corner(1) - corner(0), corner(2) - corner(0))
+                   .norm();
+        return 0.5 *
+               cross_product_3d(corner(3) - corner(0), corner(2) - corner(1))
+                 .norm();
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  AdvectedGrid<dim>::add_face_tractions(const Problem<dim> &problem,
+                                        const double        time,
+                                        NodalSystem<dim>   &system) const
+  {
+    constexpr unsigned int              n_sides = 2 * dim;
+    std::array<bool, n_sides>           loaded{};
+    std::array<Tensor<1, dim>, n_sides> traction;
+    for (const auto id : problem.traction_boundaries())
+      {
+        AssertThrow(id < n_sides, ExcInternalError());
+        loaded[id]   = true;
+        traction[id] = problem.traction(id, time);
+      }
+    double *force[dim];
+    for (unsigned int c = 0; c < dim; ++c)
+      force[c] = system.force[c].get_values();
+    for (const auto &face : boundary_faces)
+      if (face.boundary_id < n_sides && loaded[face.boundary_id])
+        {
+          const Tensor<1, dim> share = traction[face.boundary_id] *
+                                       measure(face.n_vertices, face.vertices) /
+                                       face.n_vertices;
+          for (unsigned int v = 0; v < face.n_vertices; ++v)
+            for (unsigned int c = 0; c < dim; ++c)
+              force[c][vertex_functions[face.vertices[v]]] += share[c];
+        }
   }
 
 
@@ -43,6 +116,7 @@ namespace MpmOtm
     owned_cell_vertices.clear();
     owned_cells.clear();
     orientations.clear();
+    boundary_faces.clear();
 
     for (const auto &cell : dofs.active_cell_iterators())
       {
@@ -73,6 +147,17 @@ namespace MpmOtm
               smallest_vertex_jacobian(corners, vertices_per_cell, 1.) > 0 ?
                 1. :
                 -1.);
+            for (const unsigned int f : cell->face_indices())
+              if (cell->face(f)->at_boundary())
+                {
+                  BoundaryFace face;
+                  face.boundary_id = cell->face(f)->boundary_id();
+                  face.n_vertices  = cell->face(f)->n_vertices();
+                  for (unsigned int v = 0; v < face.n_vertices; ++v)
+                    face.vertices[v] =
+                      position_of_vertex[cell->face(f)->vertex_index(v)];
+                  boundary_faces.push_back(face);
+                }
           }
       }
     moved_positions.resize(vertex_positions.size());

@@ -13,6 +13,24 @@ namespace MpmOtm
 
 
   template <int dim>
+  bool
+  FixedGrid<dim>::tractions_on_grid_faces() const
+  {
+    return false;
+  }
+
+
+
+  template <int dim>
+  void
+  FixedGrid<dim>::add_face_tractions(const Problem<dim> &,
+                                     const double,
+                                     NodalSystem<dim> &) const
+  {}
+
+
+
+  template <int dim>
   void
   FixedGrid<dim>::initialize(BackgroundGrid<dim> &,
                              const ShapeFunctions<dim> &,

@@ -41,7 +41,13 @@ namespace MpmOtm
     }
     {
       TimerOutput::Scope scope(timer, "particle to grid");
-      system.assemble(material_points, data, problem, time);
+      system.assemble(material_points,
+                      data,
+                      problem,
+                      time,
+                      !grid_motion.tractions_on_grid_faces());
+      grid_motion.add_face_tractions(problem, time, system);
+      system.finish_assembly();
     }
     {
       TimerOutput::Scope scope(timer, "solve");

@@ -66,7 +66,8 @@ namespace MpmOtm
   NodalSystem<dim>::assemble(const MaterialPoints<dim>    &material_points,
                              const ParticleShapeData<dim> &shape_data,
                              const Problem<dim>           &problem,
-                             const double                  time)
+                             const double                  time,
+                             const bool                    tractions_on_points)
   {
     using Layout = PropertyLayout<dim>;
     lumped_mass  = 0.;
@@ -109,7 +110,7 @@ namespace MpmOtm
                                  Layout::get_vector(properties,
                                                     Layout::initial_position)),
                                time);
-        if (properties[Layout::traction_measure] > 0.)
+        if (tractions_on_points && properties[Layout::traction_measure] > 0.)
           external += properties[Layout::traction_measure] *
                       traction[static_cast<unsigned int>(
                         properties[Layout::traction_boundary])];
@@ -132,7 +133,14 @@ namespace MpmOtm
         particle_mass[k] = m;
         ++k;
       }
+  }
 
+
+
+  template <int dim>
+  void
+  NodalSystem<dim>::finish_assembly()
+  {
     lumped_mass.compress(VectorOperation::add);
     for (unsigned int c = 0; c < dim; ++c)
       {

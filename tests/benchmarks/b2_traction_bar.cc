@@ -20,7 +20,9 @@
 //   in, int_0^l sigma^2 / E dX (measured 0.8 % below).
 // Published behaviour: OTM-P1 follows the exact solution without MPM-P1's
 // grid-crossing noise, so its RMS stress error and its largest pointwise
-// stress deviation must be below MPM-P1's.
+// stress deviation must be below MPM-P1's (measured for OTM-P1, whose grid
+// carries the traction on its moving end vertex: 0.05 % displacement, 0.75 %
+// stress, energy within 0.2 %).
 
 #include <deal.II/base/numbers.h>
 

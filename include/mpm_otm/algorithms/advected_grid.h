@@ -5,6 +5,7 @@
 
 #include <mpm_otm/algorithms/grid_motion.h>
 
+#include <array>
 #include <vector>
 
 namespace MpmOtm
@@ -26,6 +27,13 @@ namespace MpmOtm
    * Before the vertices move, every locally owned cell is checked: a cell
    * whose Jacobian would change sign at one of its vertices stops the run
    * with the cell and its position, and the grid is left as it was.
+   *
+   * The grid covers the material only, so its boundary is the material
+   * boundary: a traction acts on the boundary faces of the moved grid,
+   * f_i += t |face| / n_face_vertices at each vertex of the face (exact for
+   * linear functions on simplex faces and parallelogram faces), with the
+   * current face measure (a Cauchy traction). In 1D the end vertex carries
+   * the traction, the journal's delta(x - l) of Sect. 8.2.
    */
   template <int dim>
   class AdvectedGrid : public GridMotion<dim>
@@ -33,6 +41,14 @@ namespace MpmOtm
   public:
     bool
     moves_vertices() const override;
+
+    bool
+    tractions_on_grid_faces() const override;
+
+    void
+    add_face_tractions(const Problem<dim> &problem,
+                       const double        time,
+                       NodalSystem<dim>   &system) const override;
 
     void
     initialize(BackgroundGrid<dim>       &grid,
@@ -54,6 +70,14 @@ namespace MpmOtm
                              const unsigned int      n_corners,
                              const double            orientation);
 
+    /**
+     * The current measure of @p face (1 in 1D).
+     */
+    double
+    measure(const unsigned int n_vertices,
+            const std::array<unsigned int, GeometryInfo<dim>::vertices_per_face>
+              &vertices) const;
+
     Triangulation<dim> *triangulation = nullptr;
 
     /**
@@ -72,6 +96,18 @@ namespace MpmOtm
     std::vector<unsigned int> owned_cell_vertices;
     std::vector<typename Triangulation<dim>::active_cell_iterator> owned_cells;
     std::vector<double>                                            orientations;
+
+    /**
+     * A boundary face of a locally owned cell: its boundary id and its
+     * vertices (indices into vertex_positions).
+     */
+    struct BoundaryFace
+    {
+      types::boundary_id boundary_id;
+      unsigned int       n_vertices;
+      std::array<unsigned int, GeometryInfo<dim>::vertices_per_face> vertices;
+    };
+    std::vector<BoundaryFace> boundary_faces;
 
     /**
      * Work array: the vertex positions after the step.

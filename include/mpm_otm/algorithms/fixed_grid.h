@@ -17,6 +17,14 @@ namespace MpmOtm
     bool
     moves_vertices() const override;
 
+    bool
+    tractions_on_grid_faces() const override;
+
+    void
+    add_face_tractions(const Problem<dim> &problem,
+                       const double        time,
+                       NodalSystem<dim>   &system) const override;
+
     void
     initialize(BackgroundGrid<dim> &,
                const ShapeFunctions<dim> &,

@@ -10,6 +10,8 @@ namespace MpmOtm
   template <int dim>
   class MaterialPoints;
   template <int dim>
+  class Problem;
+  template <int dim>
   class ShapeFunctions;
 
   /**
@@ -33,6 +35,24 @@ namespace MpmOtm
      */
     virtual bool
     moves_vertices() const = 0;
+
+    /**
+     * True if the grid's boundary is the material's (the grid moves with the
+     * material), so that tractions act on the grid's boundary faces; false
+     * if the boundary material points carry them (thesis Sect. 2.4.1).
+     */
+    virtual bool
+    tractions_on_grid_faces() const = 0;
+
+    /**
+     * If tractions_on_grid_faces(): add the tractions of @p problem at
+     * @p time on the locally owned boundary faces to system.force, before
+     * NodalSystem::finish_assembly().
+     */
+    virtual void
+    add_face_tractions(const Problem<dim> &problem,
+                       const double        time,
+                       NodalSystem<dim>   &system) const = 0;
 
     /**
      * Prepare for @p grid with the functions @p shape_functions, numbered

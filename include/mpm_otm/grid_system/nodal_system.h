@@ -50,16 +50,27 @@ namespace MpmOtm
     partitioner() const;
 
     /**
-     * Assemble lumped masses sum_p m_p phi_i (journal Eq. 17), momenta
-     * (Eq. 20) and forces f_i = sum_p [phi_i (m_p b + t_p) - V_p sigma_p
-     * grad phi_i] (Eq. 21 and thesis Eq. 2.28) at @p time, and the list of
-     * empty functions.
+     * Start the assembly of lumped masses sum_p m_p phi_i (journal Eq. 17),
+     * momenta (Eq. 20) and forces f_i = sum_p [phi_i (m_p b + t_p) - V_p
+     * sigma_p grad phi_i] (Eq. 21 and thesis Eq. 2.28) at @p time. The
+     * tractions t_p of the boundary points are included if
+     * @p tractions_on_points (a fixed grid, whose boundary is not the
+     * material's); otherwise the caller adds them on the grid's boundary
+     * faces. Entries of other ranks are summed by finish_assembly().
      */
     void
     assemble(const MaterialPoints<dim>    &material_points,
              const ParticleShapeData<dim> &shape_data,
              const Problem<dim>           &problem,
-             const double                  time);
+             const double                  time,
+             const bool                    tractions_on_points);
+
+    /**
+     * Sum the contributions of all ranks, stop on a non-finite force or
+     * momentum, and list the functions without material.
+     */
+    void
+    finish_assembly();
 
     /**
      * Assemble only the momenta sum_p m_p phi_i v_p from the current particle
