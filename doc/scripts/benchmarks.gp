@@ -4,13 +4,21 @@ set grid
 set key top right
 
 set output "figures/B1b-convergence.png"
-set title "B1b: RMS displacement error at T = 1e-3 (journal Fig. 6, MPM-P1)"
+set title "B1b: RMS displacement error at T = 1e-3 (journal Fig. 6, P1 curves)"
 set logscale xy
 set xlabel "number of nodes"
 set ylabel "RMS displacement error"
 set format y "10^{%L}"
 plot "data/B1b-mpm-p1.dat" using 1:2 with linespoints lw 2 pt 7 title "mpm-otm, MPM-P1 (USL, lumped)", \
-     [8:128] 1e-3/x**2 with lines dt 2 lc rgb "gray" title "second order"
+     "data/B1b-otm-p1.dat" using 1:2 with linespoints lw 2 pt 5 title "mpm-otm, OTM-P1 (consistent)", \
+     [8:512] 1.6e-4/x**2 with lines dt 2 lc rgb "gray" title "second order"
+
+set output "figures/B2-convergence.png"
+set title "B2: RMS displacement error at T = 0.1, 12 points per cell (journal Fig. 8)"
+set xlabel "nodes in the material domain"
+plot "data/B2-convergence.dat" using 1:2 with linespoints lw 2 pt 7 title "mpm-otm, MPM-P1", \
+     "data/B2-convergence.dat" using 1:3 with linespoints lw 2 pt 5 title "mpm-otm, OTM-P1", \
+     [17:257] 5e-4/x**2 with lines dt 2 lc rgb "gray" title "second order"
 
 set output "figures/B5-convergence.png"
 set title "B5 small deformation: L2 displacement error at t = 0.02 (thesis Table 4.2)"
@@ -37,10 +45,50 @@ set ylabel "v_y (m/s)"
 plot "data/B6-top.dat" using 1:5 with lines lw 3 lc rgb "gray" title "exact (series)", \
      "data/B6-top.dat" using 1:4 with lines lw 1.5 lc rgb "blue" title "mpm-otm, Lagrange MPM 2 x 16 blocks"
 
+set output "figures/B2-stress.png"
+set title "B2: stress at T = 0.4, 68 material nodes, 4 points per cell (journal Fig. 7)"
+set xlabel "X (m)"
+set ylabel "sigma (Pa)"
+set key bottom left
+plot "data/B2-profile-otm.dat" using 1:5 with lines lw 3 lc rgb "gray" title "exact", \
+     "data/B2-profile-mpm.dat" using 1:4 with points pt 7 ps 0.5 lc rgb "red" title "mpm-otm, MPM-P1", \
+     "data/B2-profile-otm.dat" using 1:4 with points pt 5 ps 0.5 lc rgb "blue" title "mpm-otm, OTM-P1"
+
+set output "figures/B2-displacement.png"
+set title "B2: displacement at T = 0.4 (journal Fig. 7)"
+set ylabel "u (m)"
+plot "data/B2-profile-otm.dat" using 1:3 with lines lw 3 lc rgb "gray" title "exact", \
+     "data/B2-profile-mpm.dat" using 1:2 with points pt 7 ps 0.5 lc rgb "red" title "mpm-otm, MPM-P1", \
+     "data/B2-profile-otm.dat" using 1:2 with points pt 5 ps 0.5 lc rgb "blue" title "mpm-otm, OTM-P1"
+
+set output "figures/B5-large.png"
+set multiplot layout 2,1 title "B5 large deformation: middle of the bar (thesis Fig. 4.7)"
+set title ""
+set xlabel "t (s)"
+set ylabel "u_x (m)"
+set key bottom left
+plot "data/B5-large.dat" using 1:2 with lines lw 3 lc rgb "gray" title "1D OTM-P1 reference", \
+     "data/B5-large.dat" using 1:4 with lines lw 1.5 lc rgb "red" title "mpm-otm, Lagrange MPM 16 x 1 blocks, 56 points per triangle"
+set ylabel "v_x (m/s)"
+plot "data/B5-large.dat" using 1:3 with lines lw 3 lc rgb "gray" title "1D OTM-P1 reference", \
+     "data/B5-large.dat" using 1:5 with lines lw 1.5 lc rgb "red" title "mpm-otm, Lagrange MPM"
+unset multiplot
+
+set output "figures/B6-large.png"
+set multiplot layout 2,1 title "B6 large deformation: top of the soil column (thesis Fig. 4.13)"
+set ylabel "u_y (m)"
+plot "data/B6-large.dat" using 1:2 with lines lw 3 lc rgb "gray" title "1D OTM-P1 reference", \
+     "data/B6-large.dat" using 1:4 with lines lw 1.5 lc rgb "red" title "mpm-otm, Lagrange MPM 1 x 4 blocks, 72 points per triangle"
+set ylabel "v_y (m/s)"
+plot "data/B6-large.dat" using 1:3 with lines lw 3 lc rgb "gray" title "1D OTM-P1 reference", \
+     "data/B6-large.dat" using 1:5 with lines lw 1.5 lc rgb "red" title "mpm-otm, Lagrange MPM"
+unset multiplot
+
 set output "figures/B3-sigma11.png"
 set title "B3: sigma_{11} along X_2 = 0.066 at T = 3.5e-3 (journal Fig. 9)"
 set xlabel "X_1"
 set ylabel "sigma_{11} (Pa)"
 set key top right
 plot "data/B3-sigma11.dat" using 1:3 with lines lw 3 lc rgb "gray" title "exact", \
-     "data/B3-sigma11.dat" using 1:2 with points pt 7 ps 0.6 lc rgb "red" title "mpm-otm, MPM-P1"
+     "data/B3-sigma11.dat" using 1:2 with points pt 7 ps 0.6 lc rgb "red" title "mpm-otm, MPM-P1", \
+     "data/B3-sigma11.dat" using 1:4 with points pt 5 ps 0.6 lc rgb "blue" title "mpm-otm, OTM-P1"

@@ -24,19 +24,90 @@ run() {
 # Last value of a column of run/statistics.csv.
 last() { tail -1 run/statistics.csv | cut -d, -f"$1"; }
 
-echo "B1b: MPM-P1 RMS displacement error at T = 1e-3"
-{
-  echo "# nodes  rms_displacement_error  (prm/B1b-bar-fixed-ends.prm)"
-  for nodes in 8 16 32 64 128 256 512; do
-    run B1b-bar-fixed-ends.prm "subsection Mesh
+# Time series of the tracked points of a run: for each particles-*.csv of
+# ./run, the time (step * $2) and the mean displacement and velocity of the
+# points nearest the middle X = $3 of a 1D/2D bar ($1 = middle) or of the top
+# row of a column ($1 = top).
+track() {
+  for file in run/particles-*.csv; do
+    step=$(basename "$file" .csv | sed 's/particles-0*//')
+    awk -F, -v mode="$1" -v t="$(awk "BEGIN{print ${step:-0} * $2}")" -v middle="${3:-0}" '
+      NR == 1 { for (i = 1; i <= NF; i++) col[$i] = i
+                up = ("Y" in col) ? "Y" : "X"; u = ("uy" in col && mode == "top") ? "uy" : "ux"
+                v = ("vy" in col && mode == "top") ? "vy" : "vx" }
+      NR > 1 && mode == "middle" && ($(col["X"]) - middle)^2 < 0.0025 { su += $(col[u]); sv += $(col[v]); n++ }
+      NR > 1 && mode == "top" { y = $(col[up]); if (y > top + 1e-9) { top = y; su = 0; sv = 0; n = 0 }
+                                if (y > top - 1e-9) { su += $(col[u]); sv += $(col[v]); n++ } }
+      END { printf "%.6g %.8e %.8e\n", t, su / n, sv / n }' "$file"
+  done | sort -g
+}
+
+echo "B1b: MPM-P1 and OTM-P1 RMS displacement error at T = 1e-3"
+for method in mpm otm; do
+  prm=B1b-bar-fixed-ends.prm
+  [ $method = otm ] && prm=B1b-bar-fixed-ends-otm.prm
+  {
+    echo "# nodes  rms_displacement_error  (prm/$prm)"
+    for nodes in 8 16 32 64 128 256 512; do
+      run $prm "subsection Mesh
  set Subdivisions = $((nodes - 1))
 end
 subsection Output
  set Write particle CSV = false
 end"
-    echo "$nodes $(last 6)"
+      echo "$nodes $(last 6)"
+    done
+  } > "$data/B1b-$method-p1.dat"
+done
+
+echo "B1a: RMS stress error of MPM and OTM over the first 20 steps"
+run B1a-bar-fixed-ends-conference.prm "set Method = MPM"
+cut -d, -f1,8 run/statistics.csv | tail -n +2 > mpm.csv
+run B1a-bar-fixed-ends-conference.prm "set Method = OTM"
+cut -d, -f8 run/statistics.csv | tail -n +2 > otm.csv
+{
+  echo "# step  stress_rms_error_MPM  stress_rms_error_OTM  (prm/B1a-bar-fixed-ends-conference.prm)"
+  paste -d, mpm.csv otm.csv | tr ',' ' '
+} > "$data/B1a-stress-error.dat"
+
+echo "B2: profiles at T = 0.4 and convergence at T = 0.1"
+for method in mpm otm; do
+  run B2-traction-bar-$method.prm ""
+  {
+    echo "# X  u  u_exact  sigma  sigma_exact  (prm/B2-traction-bar-$method.prm, T = 0.4)"
+    awk -F, 'NR > 1 { pi = 3.14159265358979; t = 0.4; X = $2
+        s1 = t + X; s2 = t - X
+        f1 = (s1 >= 1 && s1 < 3) ? sin(pi * s1) : 0; f2 = (s2 >= 1 && s2 < 3) ? sin(pi * s2) : 0
+        g1 = (s1 >= 1 && s1 < 3) ? -(1 + cos(pi * s1)) / pi : 0; g2 = (s2 >= 1 && s2 < 3) ? -(1 + cos(pi * s2)) / pi : 0
+        printf "%.8f %.8e %.8e %.8e %.8e\n", X, $4, (g1 - g2) / 100, $6, f1 + f2 }' \
+      run/particles-04000.csv | sort -g
+  } > "$data/B2-profile-$method.dat"
+done
+{
+  echo "# material_nodes  rms_displacement_error_MPM  rms_displacement_error_OTM  (T = 0.1, 12 points per cell)"
+  for nodes in 5 9 17 33 65 129 257; do
+    run B2-traction-bar-convergence.prm "subsection Mesh
+ set Subdivisions = $((5 * (nodes - 1) / 4))
+end
+subsection Output
+ set Write particle CSV = false
+end"
+    mpm=$(last 6)
+    run B2-traction-bar-otm.prm "subsection Time
+ set End time = 0.1
+end
+subsection Mesh
+ set Subdivisions = $((nodes - 1))
+end
+subsection Particles
+ set Particles per cell = 12
+end
+subsection Output
+ set Write particle CSV = false
+end"
+    echo "$nodes $mpm $(last 6)"
   done
-} > "$data/B1b-mpm-p1.dat"
+} > "$data/B2-convergence.dat"
 
 echo "B5: Lagrange MPM L2 displacement error at t = 0.02"
 published=(1.80956e-04 4.44076e-05 1.07531e-05 2.68352e-06)
@@ -68,12 +139,35 @@ run B6-soil-column-small.prm ""
   done | sort -g
 } > "$data/B6-top.dat"
 
+echo "B5 and B6, large deformation: Lagrange MPM against the 1D OTM reference"
+run B5-bar-large-reference-1d.prm ""
+track middle 1e-3 12.5 > reference.dat
+run B5-bar-2d-large.prm ""
+track middle 1e-3 12.5 > mpm.dat
+{
+  echo "# time  u_reference  v_reference  u_MPM  v_MPM  (middle of the bar; prm/B5-bar-large-reference-1d.prm, prm/B5-bar-2d-large.prm)"
+  paste -d' ' reference.dat <(cut -d' ' -f2,3 mpm.dat)
+} > "$data/B5-large.dat"
+run B6-soil-column-large-reference-1d.prm ""
+track top 2e-5 > reference.dat
+run B6-soil-column-2d-large.prm ""
+track top 1e-4 > mpm.dat
+{
+  echo "# time  u_reference  v_reference  u_MPM  v_MPM  (top of the column; prm/B6-soil-column-large-reference-1d.prm, prm/B6-soil-column-2d-large.prm)"
+  paste -d' ' reference.dat <(cut -d' ' -f2,3 mpm.dat)
+} > "$data/B6-large.dat"
+
 echo "B3: sigma11 along X2 = 0.0664 at T = 3.5e-3"
+run B3-plate-manufactured-otm.prm "subsection Output
+ set Interval = 0
+end"
+awk -F, 'NR > 1 && ($3 - 0.06640625)^2 < 1e-18 { printf "%.8f %.8e\n", $2, $10 }' \
+  run/particles-00035.csv | sort -g > otm.dat
 run B3-plate-manufactured.prm "subsection Output
  set Interval = 0
 end"
 {
-  echo "# X1  sigma11_MPM_P1  sigma11_exact  (prm/B3-plate-manufactured.prm)"
+  echo "# X1  sigma11_MPM_P1  sigma11_exact  sigma11_OTM_P1  (prm/B3-plate-manufactured.prm, -otm.prm)"
   awk -F, 'NR > 1 && ($3 - 0.06640625)^2 < 1e-18 {
       pi = 3.14159265358979; E = 1e7; nu = 0.3; rho = 1000; A = 0.005; t = 3.5e-3
       lambda = E * nu / ((1 + nu) * (1 - 2 * nu)); mu = E / (2 * (1 + nu)); c = sqrt(E / rho)
@@ -81,7 +175,7 @@ end"
       F2 = 1 + 2 * pi * A * cos(2 * pi * $3) * sin(c * pi * t + pi)
       J = F1 * F2
       printf "%.8f %.8e %.8e\n", $2, $10, (lambda * log(J) + mu * (F1 * F1 - 1)) / J }' \
-    run/particles-00035.csv | sort -g
+    run/particles-00035.csv | sort -g | paste -d' ' - <(cut -d' ' -f2 otm.dat)
 } > "$data/B3-sigma11.dat"
 
 echo "Plots"
