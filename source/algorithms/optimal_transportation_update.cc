@@ -12,16 +12,10 @@ namespace MpmOtm
     const double                  dt,
     const double                  previous_dt) const
   {
-    const double centred_step = 0.5 * (dt + previous_dt);
-    for (unsigned int c = 0; c < dim; ++c)
-      {
-        mass_matrix.solve(system,
-                          shape_data,
-                          system.momentum[c],
-                          system.velocity[c],
-                          c);
-        system.velocity[c].add(centred_step, system.acceleration[c]);
-      }
+    this->momentum_plus_acceleration(system,
+                                     mass_matrix,
+                                     shape_data,
+                                     0.5 * (dt + previous_dt));
   }
 
 

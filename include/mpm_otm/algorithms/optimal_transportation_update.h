@@ -1,7 +1,7 @@
 #ifndef mpm_otm_algorithms_optimal_transportation_update_h
 #define mpm_otm_algorithms_optimal_transportation_update_h
 
-#include <mpm_otm/algorithms/nodal_update.h>
+#include <mpm_otm/algorithms/update_stress_last.h>
 
 namespace MpmOtm
 {
@@ -17,10 +17,11 @@ namespace MpmOtm
    * displacement is dt v_i^{s+1} as for the other updates; for a constant
    * time step this is the USL update (Eqs. 58-59). The particle velocity is
    * not advanced by the acceleration but follows from the displacement of
-   * the point (Eq. 57).
+   * the point (Eq. 57). It is therefore a USL update with the centred step
+   * and the other particle-velocity rule.
    */
   template <int dim>
-  class OptimalTransportationUpdate : public NodalUpdate<dim>
+  class OptimalTransportationUpdate : public UpdateStressLast<dim>
   {
   public:
     void
