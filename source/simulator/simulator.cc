@@ -241,6 +241,36 @@ namespace MpmOtm
       }
 
     problem_description->initialize(*material, grid->box());
+    if (grid_motion->moves_vertices())
+      {
+        // OTM and the unified approach mesh the material domain only: a
+        // node without material would stay behind while the cells around
+        // it move with the material.
+        const auto   region    = problem_description->material_region();
+        const auto   box       = grid->box();
+        const double tolerance = 1e-10 * box.side_length(0);
+        bool         same      = true;
+        for (unsigned int d = 0; d < dim; ++d)
+          same =
+            same &&
+            std::abs(region.lower_bound(d) - box.lower_bound(d)) <= tolerance &&
+            std::abs(region.upper_bound(d) - box.upper_bound(d)) <= tolerance;
+        if (!same)
+          {
+            std::ostringstream message;
+            message << "Method = OTM and Unified move the grid with the "
+                       "material, so the grid must be the material domain: "
+                       "the material fills ["
+                    << region.get_boundary_points().first << "] to ["
+                    << region.get_boundary_points().second
+                    << "] but the grid (Mesh/Lower corner, Upper corner) "
+                       "spans ["
+                    << box.get_boundary_points().first << "] to ["
+                    << box.get_boundary_points().second
+                    << "]. Set the Mesh corners to the material's.";
+            AssertThrow(false, ExcMessage(message.str()));
+          }
+      }
     points->seed(*grid, *material, *problem_description);
     AssertThrow(points->n_global_points() > 0,
                 ExcMessage("No material point was created: the problem's "
