@@ -2,7 +2,10 @@
 
 #include <mpm_otm/simulator/simulator.h>
 
+#include <chrono>
 #include <iostream>
+#include <sstream>
+#include <thread>
 
 namespace
 {
@@ -23,6 +26,35 @@ namespace
     simulator.setup(prm);
     simulator.run();
   }
+
+
+
+  /**
+   * Report @p message and return the exit status. Serial runs just print it.
+   * In parallel, the errors of the application are raised on every rank at
+   * once (rank 0 prints them), but an error of one rank alone would leave
+   * the others waiting in a collective operation for ever. So rank 0 prints
+   * and aborts all ranks; any other rank first gives rank 0 the time to do
+   * so for the same error, and if it is still running, the error was its
+   * own: it prints it with its rank and aborts all ranks.
+   */
+  int
+  stop_with_error(const std::string &message)
+  {
+    const unsigned int rank =
+      dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
+    const unsigned int n_ranks =
+      dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
+    if (rank != 0)
+      std::this_thread::sleep_for(std::chrono::seconds(3));
+    std::cerr << "\nmpm-otm stopped with an error";
+    if (rank != 0)
+      std::cerr << " on MPI rank " << rank;
+    std::cerr << ":\n" << message << std::endl;
+    if (n_ranks > 1)
+      MPI_Abort(MPI_COMM_WORLD, 1);
+    return 1;
+  }
 } // namespace
 
 
@@ -33,6 +65,8 @@ main(int argc, char *argv[])
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const bool                               root =
     dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+  bool        failed = false;
+  std::string error_message;
   try
     {
       const std::string argument = (argc > 1) ? argv[1] : "";
@@ -75,20 +109,15 @@ main(int argc, char *argv[])
     }
   catch (const dealii::ExceptionBase &error)
     {
-      if (root)
-        {
-          std::cerr << "\nmpm-otm stopped with an error:\n";
-          error.print_info(std::cerr);
-          std::cerr << std::endl;
-        }
-      return 1;
+      std::ostringstream text;
+      error.print_info(text);
+      failed        = true;
+      error_message = text.str();
     }
   catch (const std::exception &error)
     {
-      if (root)
-        std::cerr << "\nmpm-otm stopped with an error:\n"
-                  << error.what() << std::endl;
-      return 1;
+      failed        = true;
+      error_message = error.what();
     }
-  return 0;
+  return failed ? stop_with_error(error_message) : 0;
 }
