@@ -7,6 +7,7 @@
 #include <mpm_otm/materials/material.h>
 #include <mpm_otm/problems/problem.h>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -184,14 +185,25 @@ namespace MpmOtm
     std::vector<unsigned int> block(dim);
     if (!grid->is_simplex())
       {
+        owned_cell_of_block.assign(
+          std::accumulate(blocks.begin(),
+                          blocks.end(),
+                          1u,
+                          std::multiplies<unsigned int>()),
+          typename Triangulation<dim>::active_cell_iterator());
         for (const auto &cell : grid->triangulation().active_cell_iterators())
           if (cell->is_locally_owned())
             {
               const Point<dim> centre = cell->center();
-              for (unsigned int d = 0; d < dim; ++d)
-                block[d] = static_cast<unsigned int>(
-                  std::floor((centre[d] - lower[d]) /
-                             (grid->box().side_length(d) / blocks[d])));
+              unsigned int     linear = 0;
+              for (unsigned int d = dim; d-- > 0;)
+                {
+                  block[d] = static_cast<unsigned int>(
+                    std::floor((centre[d] - lower[d]) /
+                               (grid->box().side_length(d) / blocks[d])));
+                  linear = linear * blocks[d] + block[d];
+                }
+              owned_cell_of_block[linear] = cell;
               if (block_is_material(block))
                 insert_points_of_block(block, cell, material, problem);
             }
@@ -362,7 +374,7 @@ namespace MpmOtm
     lost_points.clear();
     if (grid->is_simplex())
       locate_on_simplices();
-    else
+    else if (!locate_in_boxes())
       particles->sort_particles_into_subdomains_and_cells();
 
     if (Utilities::MPI::sum(lost_points.size(), communicator()) > 0)
@@ -439,6 +451,108 @@ namespace MpmOtm
                                  point.cell,
                                  ArrayView<const double>(point.properties));
     particles->update_cached_numbers();
+  }
+
+
+
+  template <int dim>
+  bool
+  MaterialPoints<dim>::locate_in_boxes()
+  {
+    const Point<dim> lower  = grid->box().get_boundary_points().first;
+    const auto      &blocks = grid->subdivisions();
+    double           block_size[dim];
+    for (unsigned int d = 0; d < dim; ++d)
+      block_size[d] = grid->box().side_length(d) / blocks[d];
+
+    struct Moved
+    {
+      typename Particles::ParticleHandler<dim>::particle_iterator particle;
+      typename Triangulation<dim>::active_cell_iterator           cell;
+    };
+    std::vector<Moved> moved;
+    bool               all_local = true;
+    for (auto particle = particles->begin(); particle != particles->end();
+         ++particle)
+      {
+        const auto       cell     = particle->get_surrounding_cell();
+        const Point<dim> location = particle->get_location();
+        const Point<dim> origin   = cell->vertex(0);
+        Point<dim>       reference;
+        bool             inside = true;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            reference[d] = (location[d] - origin[d]) /
+                           (cell->vertex(1u << d)[d] - origin[d]);
+            inside = inside && reference[d] >= 0. && reference[d] <= 1.;
+          }
+        if (inside)
+          {
+            particle->set_reference_location(reference);
+            continue;
+          }
+        unsigned int linear = 0;
+        for (unsigned int d = dim; d-- > 0 && all_local;)
+          {
+            const double index =
+              std::floor((location[d] - lower[d]) / block_size[d]);
+            // A point on the upper face of the grid belongs to the last
+            // block; beyond it, or not finite, it has left the grid.
+            if (!(index >= 0. && index <= blocks[d]))
+              all_local = false;
+            else
+              linear =
+                linear * blocks[d] +
+                std::min(static_cast<unsigned int>(index), blocks[d] - 1);
+          }
+        if (!all_local ||
+            owned_cell_of_block[linear].state() != IteratorState::valid)
+          {
+            all_local = false;
+            break;
+          }
+        moved.push_back({particle, owned_cell_of_block[linear]});
+      }
+    if (Utilities::MPI::min(all_local ? 1 : 0, communicator()) == 0)
+      return false;
+    if (moved.empty())
+      return true;
+
+    // Move the points that entered another cell of this rank.
+    std::vector<Point<dim>>            locations;
+    std::vector<types::particle_index> ids;
+    std::vector<double>                properties;
+    std::vector<typename Particles::ParticleHandler<dim>::particle_iterator>
+      to_remove;
+    for (const auto &point : moved)
+      {
+        locations.push_back(point.particle->get_location());
+        ids.push_back(point.particle->get_id());
+        const auto values = point.particle->get_properties();
+        properties.insert(properties.end(), values.begin(), values.end());
+        to_remove.push_back(point.particle);
+      }
+    particles->remove_particles(to_remove);
+    const unsigned int n_properties = PropertyLayout<dim>::n_properties;
+    for (unsigned int k = 0; k < moved.size(); ++k)
+      {
+        const auto      &cell   = moved[k].cell;
+        const Point<dim> origin = cell->vertex(0);
+        Point<dim>       reference;
+        for (unsigned int d = 0; d < dim; ++d)
+          reference[d] = std::clamp((locations[k][d] - origin[d]) /
+                                      (cell->vertex(1u << d)[d] - origin[d]),
+                                    0.,
+                                    1.);
+        particles->insert_particle(
+          locations[k],
+          reference,
+          ids[k],
+          cell,
+          ArrayView<const double>(&properties[k * n_properties], n_properties));
+      }
+    particles->update_cached_numbers();
+    return true;
   }
 
 

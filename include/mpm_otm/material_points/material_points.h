@@ -110,6 +110,23 @@ namespace MpmOtm
     void
     locate_on_simplices();
 
+    /**
+     * Locate on a fixed grid of axis-parallel boxes by arithmetic: a point
+     * still inside its cell only gets its reference coordinates; a point
+     * that entered another locally owned cell is moved there. Returns false
+     * (on every rank) if some point has to change rank or has left the
+     * grid, which deal.II's sort then handles.
+     */
+    bool
+    locate_in_boxes();
+
+    /**
+     * The locally owned cell of each block of a hypercube grid, in
+     * lexicographic block order (invalid where not locally owned).
+     */
+    std::vector<typename Triangulation<dim>::active_cell_iterator>
+      owned_cell_of_block;
+
     const BackgroundGrid<dim>                                *grid = nullptr;
     std::unique_ptr<GridTools::Cache<dim, dim>>               cache;
     std::vector<unsigned int>                                 n_per_direction;
