@@ -150,8 +150,6 @@ namespace MpmOtm
         Tensor<2, dim> F = Layout::get_deformation_gradient(properties);
         F = (unit_symmetric_tensor<dim>() + dt * velocity_gradient) * F;
         Layout::set_deformation_gradient(properties, F);
-        properties[Layout::volume] =
-          determinant(F) * properties[Layout::initial_volume];
 
         SymmetricTensor<2, dim> sigma = Layout::get_stress(properties);
         material.update_stress(F, velocity_gradient, dt, sigma);
@@ -164,7 +162,7 @@ namespace MpmOtm
         const double check =
           sigma.norm() +
           Layout::get_vector(properties, Layout::velocity).norm() +
-          properties[Layout::volume];
+          Layout::volume(properties);
         const bool healthy = std::isfinite(check) && determinant(F) > 0.;
         if (!healthy && bad_point == numbers::invalid_unsigned_int)
           {

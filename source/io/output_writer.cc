@@ -57,7 +57,7 @@ namespace MpmOtm
               patch.data(n++, 0) = properties[Layout::velocity + d];
             for (unsigned int k = 0; k < Layout::n_stress_components; ++k)
               patch.data(n++, 0) = properties[Layout::stress + k];
-            patch.data(n++, 0) = properties[Layout::volume];
+            patch.data(n++, 0) = Layout::volume(properties);
             patch.data(n++, 0) = properties[Layout::mass];
             patch.data(n++, 0) = particle.get_id();
             patches.push_back(patch);
@@ -346,7 +346,7 @@ namespace MpmOtm
           row << ',' << properties[Layout::velocity + d];
         for (const auto &[i, j] : stress_columns)
           row << ',' << sigma[i][j];
-        row << ',' << properties[Layout::volume] << ','
+        row << ',' << Layout::volume(properties) << ','
             << properties[Layout::mass] << '\n';
         rows.emplace_back(particle.get_id(), row.str());
       }

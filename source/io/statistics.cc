@@ -26,7 +26,7 @@ namespace MpmOtm
       {
         const auto           properties = particle.get_properties();
         const double         m          = properties[Layout::mass];
-        const double         volume     = properties[Layout::volume];
+        const double         volume     = Layout::volume(properties);
         const Tensor<1, dim> v =
           Layout::get_vector(properties, Layout::velocity);
         const Point<dim> X(

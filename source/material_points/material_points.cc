@@ -330,7 +330,6 @@ namespace MpmOtm
         std::fill(properties.begin(), properties.end(), 0.);
         properties[Layout::mass]           = material.density() * volume;
         properties[Layout::initial_volume] = volume;
-        properties[Layout::volume]         = volume;
         const Tensor<1, dim> v0            = problem.initial_velocity(X);
         for (unsigned int d = 0; d < dim; ++d)
           {

@@ -102,7 +102,7 @@ main(int argc, char **argv)
                      properties[Layout::stress],
                      0.05);
               expect("point " + std::to_string(X) + " volume",
-                     properties[Layout::volume],
+                     Layout::volume(properties),
                      1.05);
             }
         }

@@ -24,16 +24,14 @@ namespace MpmOtm
     static constexpr unsigned int mass = 0;
     /// Initial volume V_p^0.
     static constexpr unsigned int initial_volume = 1;
-    /// Current volume V_p = det(F_p) V_p^0 (journal Eq. 30).
-    static constexpr unsigned int volume = 2;
     /// Boundary measure (length in 2D, area in 3D, 1 in 1D) this particle
     /// represents on a traction boundary, 0 for interior particles.
-    static constexpr unsigned int traction_measure = 3;
+    static constexpr unsigned int traction_measure = 2;
     /// Boundary id whose traction acts on the particle (meaningful only
     /// when traction_measure > 0).
-    static constexpr unsigned int traction_boundary = 4;
+    static constexpr unsigned int traction_boundary = 3;
     /// Initial position X_p (dim components).
-    static constexpr unsigned int initial_position = 5;
+    static constexpr unsigned int initial_position = 4;
     /// Velocity v_p (dim components).
     static constexpr unsigned int velocity = initial_position + dim;
     /// Deformation gradient F_p (dim x dim components).
@@ -82,6 +80,18 @@ namespace MpmOtm
         for (unsigned int j = 0; j < dim; ++j)
           F[i][j] = properties[deformation_gradient + i * dim + j];
       return F;
+    }
+
+    /**
+     * The current volume V_p = det(F_p) V_p^0 (journal Eqs. 30 and 53); it
+     * is not stored, since it follows from F_p.
+     */
+    template <typename Number>
+    static double
+    volume(const ArrayView<Number> &properties)
+    {
+      return determinant(get_deformation_gradient(properties)) *
+             properties[initial_volume];
     }
 
     /**
