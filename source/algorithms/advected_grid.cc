@@ -95,8 +95,10 @@ namespace MpmOtm
   void
   AdvectedGrid<dim>::initialize(BackgroundGrid<dim>       &grid,
                                 const ShapeFunctions<dim> &shape_functions,
-                                const NodalSystem<dim>    &system)
+                                const NodalSystem<dim>    &system,
+                                const double               stable_cell_size)
   {
+    stable_size                    = stable_cell_size;
     const DoFHandler<dim>    &dofs = shape_functions.dof_handler();
     const FiniteElement<dim> &fe   = dofs.get_fe();
     vertices_per_cell              = fe.reference_cell().n_vertices();
@@ -233,7 +235,24 @@ namespace MpmOtm
           {
             std::ostringstream message;
             message << "cell " << owned_cells[k]->id() << " (centre (" << centre
-                    << ") after the step) would invert. ";
+                    << ") after the step) would invert: its Jacobian would be "
+                    << "non-positive at a vertex. ";
+            inverted = message.str();
+            continue;
+          }
+        double size = std::numeric_limits<double>::max();
+        for (unsigned int v = 0; v < vertices_per_cell; ++v)
+          for (unsigned int w = v + 1; w < vertices_per_cell; ++w)
+            size = std::min(size, corners[v]->distance(*corners[w]));
+        if (size < stable_size)
+          {
+            std::ostringstream message;
+            message << "cell " << owned_cells[k]->id() << " (centre (" << centre
+                    << ") after the step) would be compressed to a vertex "
+                    << "distance of " << size
+                    << ", below c dt = " << stable_size
+                    << " for which the time step is stable (CFL, thesis "
+                    << "Eq. 2.48). ";
             inverted = message.str();
           }
       }
@@ -247,13 +266,10 @@ namespace MpmOtm
         AssertThrow(false,
                     ExcMessage(
                       "The moving grid became invalid: " + all +
-                      "Its Jacobian would be non-positive at a vertex after "
-                      "the vertices move by the nodal displacements (the "
-                      "grid is left at the start of the step). The material "
-                      "deforms more than a grid that moves with it can "
-                      "follow: use Method = MPM (fixed grid) for such "
-                      "deformations, or reduce Time/Time step if the motion "
-                      "per step is too large."));
+                      "The grid is left at the start of the step. Reduce "
+                      "Time/Time step; if the material deforms more than a "
+                      "grid that moves with it can follow, use Method = MPM "
+                      "(fixed grid)."));
       }
 
     for (unsigned int k = 0; k < vertex_positions.size(); ++k)

@@ -34,7 +34,8 @@ namespace MpmOtm
   void
   FixedGrid<dim>::initialize(BackgroundGrid<dim> &,
                              const ShapeFunctions<dim> &,
-                             const NodalSystem<dim> &)
+                             const NodalSystem<dim> &,
+                             const double)
   {}
 
 

@@ -279,7 +279,10 @@ namespace MpmOtm
     shape_functions->initialize(*grid);
     system = std::make_unique<NodalSystem<dim>>();
     system->setup(*shape_functions, problem_description->fixed_components());
-    grid_motion->initialize(*grid, *shape_functions, *system);
+    grid_motion->initialize(*grid,
+                            *shape_functions,
+                            *system,
+                            material->wave_speed() * time_step);
     output->initialize(prm,
                        problem_description->has_exact_solution(),
                        problem_description->has_exact_stress(),

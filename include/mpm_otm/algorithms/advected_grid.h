@@ -25,8 +25,10 @@ namespace MpmOtm
    * or rank and no search is needed.
    *
    * Before the vertices move, every locally owned cell is checked: a cell
-   * whose Jacobian would change sign at one of its vertices stops the run
-   * with the cell and its position, and the grid is left as it was.
+   * whose Jacobian would change sign at one of its vertices, or that would
+   * be compressed below the size for which the time step is stable (CFL,
+   * thesis Eq. 2.48), stops the run with the cell and its position, and the
+   * grid is left as it was.
    *
    * The grid covers the material only, so its boundary is the material
    * boundary: a traction acts on the boundary faces of the moved grid,
@@ -53,7 +55,8 @@ namespace MpmOtm
     void
     initialize(BackgroundGrid<dim>       &grid,
                const ShapeFunctions<dim> &shape_functions,
-               const NodalSystem<dim>    &system) override;
+               const NodalSystem<dim>    &system,
+               const double               stable_cell_size) override;
 
     void
     advance(const NodalSystem<dim> &system,
@@ -79,6 +82,11 @@ namespace MpmOtm
               &vertices) const;
 
     Triangulation<dim> *triangulation = nullptr;
+
+    /**
+     * c dt: the smallest stable distance between two vertices of a cell.
+     */
+    double stable_size = 0.;
 
     /**
      * Each vertex of a locally owned or ghost cell once: where its position

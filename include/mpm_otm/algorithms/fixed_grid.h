@@ -28,7 +28,8 @@ namespace MpmOtm
     void
     initialize(BackgroundGrid<dim> &,
                const ShapeFunctions<dim> &,
-               const NodalSystem<dim> &) override;
+               const NodalSystem<dim> &,
+               const double) override;
 
     void
     advance(const NodalSystem<dim> &system,

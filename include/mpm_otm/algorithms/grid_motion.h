@@ -57,11 +57,15 @@ namespace MpmOtm
     /**
      * Prepare for @p grid with the functions @p shape_functions, numbered
      * as in @p system (called once, after the nodal system is set up).
+     * @p stable_cell_size = c dt is the smallest distance between two
+     * vertices of a cell for which the time step satisfies the CFL bound
+     * (thesis Eq. 2.48); a moving grid must not compress a cell below it.
      */
     virtual void
     initialize(BackgroundGrid<dim>       &grid,
                const ShapeFunctions<dim> &shape_functions,
-               const NodalSystem<dim>    &system) = 0;
+               const NodalSystem<dim>    &system,
+               const double               stable_cell_size) = 0;
 
     /**
      * Move the grid by dt times the nodal velocities of @p system (ghost
