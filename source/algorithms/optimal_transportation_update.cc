@@ -12,10 +12,27 @@ namespace MpmOtm
     const double                  dt,
     const double                  previous_dt) const
   {
-    this->momentum_plus_acceleration(system,
-                                     mass_matrix,
-                                     shape_data,
-                                     0.5 * (dt + previous_dt));
+    const double centred_step = 0.5 * (dt + previous_dt);
+    for (unsigned int c = 0; c < dim; ++c)
+      {
+        typename NodalSystem<dim>::VectorType right_hand_side(
+          system.momentum[c]);
+        right_hand_side.add(centred_step, system.force[c]);
+        mass_matrix.solve(system,
+                          shape_data,
+                          right_hand_side,
+                          system.velocity[c],
+                          c);
+      }
+  }
+
+
+
+  template <int dim>
+  bool
+  OptimalTransportationUpdate<dim>::needs_nodal_accelerations() const
+  {
+    return false;
   }
 
 

@@ -49,18 +49,19 @@ namespace MpmOtm
       grid_motion.add_face_tractions(problem, time, system);
       system.finish_assembly();
     }
-    {
-      TimerOutput::Scope scope(timer, "solve");
-      for (unsigned int c = 0; c < dim; ++c)
-        {
-          mass_matrix.solve(system,
-                            data,
-                            system.force[c],
-                            system.acceleration[c],
-                            c);
-          system.acceleration[c].update_ghost_values();
-        }
-    }
+    if (nodal_update.needs_nodal_accelerations())
+      {
+        TimerOutput::Scope scope(timer, "solve");
+        for (unsigned int c = 0; c < dim; ++c)
+          {
+            mass_matrix.solve(system,
+                              data,
+                              system.force[c],
+                              system.acceleration[c],
+                              c);
+            system.acceleration[c].update_ghost_values();
+          }
+      }
     const bool velocity_from_displacement =
       nodal_update.particle_velocity() ==
       NodalUpdate<dim>::ParticleVelocity::from_displacement;

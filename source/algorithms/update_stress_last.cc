@@ -20,19 +20,6 @@ namespace MpmOtm
     const double                  dt,
     const double) const
   {
-    momentum_plus_acceleration(system, mass_matrix, shape_data, dt);
-  }
-
-
-
-  template <int dim>
-  void
-  UpdateStressLast<dim>::momentum_plus_acceleration(
-    NodalSystem<dim>             &system,
-    const MassMatrix<dim>        &mass_matrix,
-    const ParticleShapeData<dim> &shape_data,
-    const double                  step)
-  {
     for (unsigned int c = 0; c < dim; ++c)
       {
         mass_matrix.solve(system,
@@ -40,7 +27,7 @@ namespace MpmOtm
                           system.momentum[c],
                           system.velocity[c],
                           c);
-        system.velocity[c].add(step, system.acceleration[c]);
+        system.velocity[c].add(dt, system.acceleration[c]);
       }
   }
 

@@ -113,11 +113,19 @@ namespace MpmOtm
     rhs.zero_out_ghost_values();
     for (const unsigned int i : excluded)
       rhs.local_element(i) = 0.;
-    solution = 0.;
 
     const double norm = rhs.l2_norm();
     if (norm == 0.)
-      return;
+      {
+        solution = 0.;
+        return;
+      }
+
+    // Start from the solution of the previous step (the same quantity a
+    // time step earlier), which is close: CG then needs few iterations.
+    solution.zero_out_ghost_values();
+    for (const unsigned int i : excluded)
+      solution.local_element(i) = 0.;
 
     const ParticleMassOperator<dim>     mass_operator(shape_data,
                                                   system.particle_mass,

@@ -54,6 +54,18 @@ namespace MpmOtm
                              const double previous_dt) const = 0;
 
     /**
+     * True if the time step must solve the nodal accelerations
+     * a = M^-1 f before the nodal update (journal Alg. 1, step 5); OTM
+     * folds the force into its single solve (Alg. 2, Eq. 51) and needs no
+     * separate accelerations.
+     */
+    virtual bool
+    needs_nodal_accelerations() const
+    {
+      return true;
+    }
+
+    /**
      * The particle-velocity update that belongs to this nodal update.
      */
     virtual ParticleVelocity

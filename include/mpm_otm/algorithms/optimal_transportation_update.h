@@ -1,7 +1,7 @@
 #ifndef mpm_otm_algorithms_optimal_transportation_update_h
 #define mpm_otm_algorithms_optimal_transportation_update_h
 
-#include <mpm_otm/algorithms/update_stress_last.h>
+#include <mpm_otm/algorithms/nodal_update.h>
 
 namespace MpmOtm
 {
@@ -12,16 +12,15 @@ namespace MpmOtm
    *   x_i^{s+1} = x_i^s + dt M^-1 (q^s + (dt + dt_prev) / 2 f^s),
    *
    * with the momentum q^s of Eq. 49 built from the particle velocities
-   * (x_p^s - x_p^{s-1}) / dt_prev. It is written as the nodal velocity
-   * v_i^{s+1} = M^-1 q^s + (dt + dt_prev) / 2 a^s, so that the nodal
-   * displacement is dt v_i^{s+1} as for the other updates; for a constant
-   * time step this is the USL update (Eqs. 58-59). The particle velocity is
-   * not advanced by the acceleration but follows from the displacement of
-   * the point (Eq. 57). It is therefore a USL update with the centred step
-   * and the other particle-velocity rule.
+   * (x_p^s - x_p^{s-1}) / dt_prev. It is computed as the nodal velocity
+   * v_i^{s+1} = M^-1 (q^s + (dt + dt_prev) / 2 f^s), one solve, so that the
+   * nodal displacement is dt v_i^{s+1} as for the other updates; for a
+   * constant time step this is the USL update (Eqs. 58-59). No nodal
+   * accelerations are needed: the particle velocity is not advanced by them
+   * but follows from the displacement of the point (Eq. 57).
    */
   template <int dim>
-  class OptimalTransportationUpdate : public UpdateStressLast<dim>
+  class OptimalTransportationUpdate : public NodalUpdate<dim>
   {
   public:
     void
@@ -31,6 +30,9 @@ namespace MpmOtm
                              const ParticleShapeData<dim> &shape_data,
                              const double                  dt,
                              const double previous_dt) const override;
+
+    bool
+    needs_nodal_accelerations() const override;
 
     typename NodalUpdate<dim>::ParticleVelocity
     particle_velocity() const override;

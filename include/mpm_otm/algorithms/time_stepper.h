@@ -28,7 +28,9 @@ namespace MpmOtm
    *  1. evaluate the shape functions at the material points (once per step,
    *     on the current grid);
    *  2. assemble nodal masses, momenta and forces (Eqs. 19-21 / 48-50);
-   *  3. solve the nodal accelerations with the mass-matrix strategy (Eq. 22);
+   *  3. solve the nodal accelerations with the mass-matrix strategy (Eq. 22)
+   *     if the nodal update uses them (OTM folds the force into its one
+   *     solve, Eq. 51);
    *  4. advance the particle velocities, v_p += dt sum_i phi_i a_i (Eq. 27),
    *     if the nodal update asks for it (USL, MUSL, unified);
    *  5. nodal velocities v_i^{s+1} from the nodal-update strategy (USL,

@@ -23,17 +23,6 @@ namespace MpmOtm
                              const ParticleShapeData<dim> &shape_data,
                              const double                  dt,
                              const double previous_dt) const override;
-
-  protected:
-    /**
-     * v_i = M^-1 q + @p step a_i for every component: the velocity form
-     * shared by USL (step dt) and OTM (the centred step of Eq. 51).
-     */
-    static void
-    momentum_plus_acceleration(NodalSystem<dim>             &system,
-                               const MassMatrix<dim>        &mass_matrix,
-                               const ParticleShapeData<dim> &shape_data,
-                               const double                  step);
   };
 } // namespace MpmOtm
 
