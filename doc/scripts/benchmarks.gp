@@ -31,6 +31,18 @@ plot "data/B5-lagrange.dat" using 2:3 with linespoints lw 2 pt 7 title "mpm-otm,
 
 unset logscale
 set format y "%g"
+set output "figures/B1a-stress-error.png"
+set title "B1a: RMS stress error over the first 20 steps (conference paper)"
+set xlabel "time step"
+set ylabel "RMS stress error (Pa)"
+set key top left
+plot "data/B1a-stress-error.dat" using 1:2 with linespoints lw 2 pt 7 title "mpm-otm, MPM-P1", \
+     "data/B1a-stress-error.dat" using 1:3 with linespoints lw 2 pt 5 dt 2 title "mpm-otm, OTM-P1", \
+     "-" using 1:2 with points pt 6 ps 2 lc rgb "black" title "published after 20 steps (MPM 3.8693, OTM 3.8684)"
+20 3.8693
+20 3.8684
+e
+
 set output "figures/B6-top-displacement.png"
 set title "B6 small deformation: displacement of the top of the soil column (thesis Fig. 4.10)"
 set xlabel "t (s)"

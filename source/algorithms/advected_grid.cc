@@ -1,6 +1,7 @@
 #include <deal.II/fe/fe.h>
 
 #include <mpm_otm/algorithms/advected_grid.h>
+#include <mpm_otm/base/collective_error.h>
 #include <mpm_otm/grid_system/background_grid.h>
 #include <mpm_otm/problems/problem.h>
 #include <mpm_otm/shape_functions/shape_functions.h>
@@ -256,21 +257,13 @@ namespace MpmOtm
             inverted = message.str();
           }
       }
-    const MPI_Comm communicator = triangulation->get_communicator();
-    if (Utilities::MPI::max(inverted.empty() ? 0 : 1, communicator) > 0)
-      {
-        std::string all;
-        for (const auto &part :
-             Utilities::MPI::all_gather(communicator, inverted))
-          all += part;
-        AssertThrow(false,
-                    ExcMessage(
-                      "The moving grid became invalid: " + all +
-                      "The grid is left at the start of the step. Reduce "
-                      "Time/Time step; if the material deforms more than a "
-                      "grid that moves with it can follow, use Method = MPM "
-                      "(fixed grid)."));
-      }
+    stop_if_any_rank_failed(
+      triangulation->get_communicator(),
+      inverted,
+      "The moving grid became invalid: ",
+      "The grid is left at the start of the step. Reduce Time/Time step; if "
+      "the material deforms more than a grid that moves with it can follow, "
+      "use Method = MPM (fixed grid).");
 
     for (unsigned int k = 0; k < vertex_positions.size(); ++k)
       *vertex_positions[k] = moved_positions[k];

@@ -1,4 +1,5 @@
 #include <mpm_otm/algorithms/time_stepper.h>
+#include <mpm_otm/base/collective_error.h>
 #include <mpm_otm/material_points/material_points.h>
 #include <mpm_otm/materials/material.h>
 #include <mpm_otm/shape_functions/shape_functions.h>
@@ -173,27 +174,20 @@ namespace MpmOtm
         ++k;
       }
 
-    const MPI_Comm communicator = system.lumped_mass.get_mpi_communicator();
-    if (Utilities::MPI::max(bad_point == numbers::invalid_unsigned_int ? 0 : 1,
-                            communicator) > 0)
+    std::string problem;
+    if (bad_point != numbers::invalid_unsigned_int)
       {
-        std::string text;
-        if (bad_point != numbers::invalid_unsigned_int)
-          {
-            std::ostringstream message;
-            message << "material point " << bad_point << " at (" << bad_location
-                    << ") has a non-finite velocity, stress "
-                    << "or volume, or an inverted deformation (det F <= 0). ";
-            text = message.str();
-          }
-        std::string all;
-        for (const auto &part : Utilities::MPI::all_gather(communicator, text))
-          all += part;
-        AssertThrow(false,
-                    ExcMessage("The computation became unstable: " + all +
-                               "Reduce Time/Time step or use a lumped mass "
-                               "matrix."));
+        std::ostringstream message;
+        message << "material point " << bad_point << " at (" << bad_location
+                << ") has a non-finite velocity, stress "
+                << "or volume, or an inverted deformation (det F <= 0). ";
+        problem = message.str();
       }
+    stop_if_any_rank_failed(system.lumped_mass.get_mpi_communicator(),
+                            problem,
+                            "The computation became unstable: ",
+                            "Reduce Time/Time step or use a lumped mass "
+                            "matrix.");
   }
 
 

@@ -2,6 +2,7 @@
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/grid_tools_cache.h>
 
+#include <mpm_otm/base/collective_error.h>
 #include <mpm_otm/grid_system/background_grid.h>
 #include <mpm_otm/material_points/material_points.h>
 #include <mpm_otm/materials/material.h>
@@ -376,22 +377,15 @@ namespace MpmOtm
     else if (!locate_in_boxes())
       particles->sort_particles_into_subdomains_and_cells();
 
-    if (Utilities::MPI::sum(lost_points.size(), communicator()) > 0)
-      {
-        std::ostringstream message;
-        for (const auto &[id, location] : lost_points)
-          message << "material point " << id << " at (" << location
-                  << ") left the background grid. ";
-        const auto all =
-          Utilities::MPI::all_gather(communicator(), message.str());
-        std::string text;
-        for (const auto &part : all)
-          text += part;
-        AssertThrow(false,
-                    ExcMessage(text + "Enlarge the grid (Mesh/Lower corner, "
-                                      "Mesh/Upper corner) or reduce the time "
-                                      "step."));
-      }
+    std::ostringstream message;
+    for (const auto &[id, location] : lost_points)
+      message << "material point " << id << " at (" << location
+              << ") left the background grid. ";
+    stop_if_any_rank_failed(communicator(),
+                            message.str(),
+                            "",
+                            "Enlarge the grid (Mesh/Lower corner, Mesh/Upper "
+                            "corner) or reduce the time step.");
   }
 
 

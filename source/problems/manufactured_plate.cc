@@ -122,17 +122,11 @@ namespace MpmOtm
   ManufacturedPlate<dim>::fixed_components() const
   {
     std::vector<FixedComponents<dim>> result;
+    // The manufactured displacement vanishes only in the normal direction
+    // on each side (u1 = 0 at X1 = 0, 1; u2 = 0 at X2 = 0, 1), so only the
+    // normal component is fixed.
     for (unsigned int side = 0; side < 2 * dim; ++side)
-      {
-        FixedComponents<dim> fixed;
-        // The manufactured displacement vanishes only in the normal
-        // direction on each side (u1 = 0 at X1 = 0, 1; u2 = 0 at X2 = 0, 1),
-        // so only the normal component is fixed.
-        fixed.boundary_id = side;
-        fixed.fixed.fill(false);
-        fixed.fixed[side / 2] = true;
-        result.push_back(fixed);
-      }
+      result.push_back(FixedComponents<dim>::normal(side));
     return result;
   }
 

@@ -87,20 +87,11 @@ namespace MpmOtm
   std::vector<FixedComponents<dim>>
   SoilColumn<dim>::fixed_components() const
   {
-    std::vector<FixedComponents<dim>> result;
-    FixedComponents<dim>              base;
-    base.boundary_id = 2 * (dim - 1);
-    base.fixed.fill(true);
-    result.push_back(base);
-    for (unsigned int d = 0; d + 1 < dim; ++d)
-      for (unsigned int side = 0; side < 2; ++side)
-        {
-          FixedComponents<dim> wall;
-          wall.boundary_id = 2 * d + side;
-          wall.fixed.fill(false);
-          wall.fixed[d] = true;
-          result.push_back(wall);
-        }
+    // The base clamped, the walls rollers.
+    std::vector<FixedComponents<dim>> result{
+      FixedComponents<dim>::all(2 * (dim - 1))};
+    for (unsigned int side = 0; side < 2 * (dim - 1); ++side)
+      result.push_back(FixedComponents<dim>::normal(side));
     return result;
   }
 

@@ -97,20 +97,10 @@ namespace MpmOtm
   std::vector<FixedComponents<dim>>
   TractionBar<dim>::fixed_components() const
   {
-    std::vector<FixedComponents<dim>> result;
-    FixedComponents<dim>              end;
-    end.boundary_id = 0;
-    end.fixed.fill(true);
-    result.push_back(end);
+    std::vector<FixedComponents<dim>> result{FixedComponents<dim>::all(0)};
     // The sides of a 2D or 3D bar: fixed in their normal direction only.
     for (unsigned int side = 2; side < 2 * dim; ++side)
-      {
-        FixedComponents<dim> fixed;
-        fixed.boundary_id = side;
-        fixed.fixed.fill(false);
-        fixed.fixed[side / 2] = true;
-        result.push_back(fixed);
-      }
+      result.push_back(FixedComponents<dim>::normal(side));
     return result;
   }
 

@@ -65,14 +65,10 @@ namespace MpmOtm
   VibratingBar<dim>::fixed_components() const
   {
     std::vector<FixedComponents<dim>> result;
+    // Both ends clamped, the other sides rollers.
     for (unsigned int side = 0; side < 2 * dim; ++side)
-      {
-        FixedComponents<dim> fixed;
-        fixed.boundary_id = side;
-        fixed.fixed.fill(side < 2);
-        fixed.fixed[side / 2] = true;
-        result.push_back(fixed);
-      }
+      result.push_back(side < 2 ? FixedComponents<dim>::all(side) :
+                                  FixedComponents<dim>::normal(side));
     return result;
   }
 

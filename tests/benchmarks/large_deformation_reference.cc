@@ -17,6 +17,8 @@
 #include <mpm_otm/material_points/material_points.h>
 #include <mpm_otm/problems/problem.h>
 
+#include <array>
+
 #include "../tests.h"
 
 using namespace MpmOtm;
@@ -82,6 +84,37 @@ namespace
       }
     return difference / (high - low);
   }
+  // A grid of a convergence check: its number of cells and the range of
+  // initial positions of the tracked points.
+  struct TrackedGrid
+  {
+    unsigned int cells;
+    double       from;
+    double       to;
+  };
+
+  // The largest difference between the tracked displacement histories of
+  // prm/@p prm on the @p fine and the @p coarse grid, relative to the range
+  // of the fine one.
+  double
+  halving_change(const std::string &prm,
+                 const std::string &common,
+                 const std::string &label,
+                 const TrackedGrid &fine,
+                 const TrackedGrid &coarse)
+  {
+    std::vector<double> histories[2];
+    const TrackedGrid  *grids[2] = {&fine, &coarse};
+    for (unsigned int i = 0; i < 2; ++i)
+      histories[i] =
+        history(prm,
+                common + "subsection Mesh\n set Subdivisions = " +
+                  std::to_string(grids[i]->cells) + "\nend\n",
+                "output-" + label + "-" + std::to_string(grids[i]->cells),
+                grids[i]->from,
+                grids[i]->to);
+    return relative_difference(histories[0], histories[1]);
+  }
 } // namespace
 
 
@@ -124,51 +157,30 @@ main(int argc, char **argv)
           "the B5 reference set-up misses the small-strain exact solution");
   }
 
-  // 2. B5 at the benchmark strain, T = 20 s, 62 and 125 cells.
-  {
-    const std::string common = "subsection Time\n set End time = 20\n"
-                               " set Time step = 1e-2\nend\n"
-                               "subsection Output\n set Interval = 50\nend\n";
-    const auto        fine =
-      history("B5-bar-large-reference-1d.prm",
-              common + "subsection Mesh\n set Subdivisions = 125\nend\n",
-              "output-b5-125",
-              12.4,
-              12.6);
-    const auto coarse =
-      history("B5-bar-large-reference-1d.prm",
-              common + "subsection Mesh\n set Subdivisions = 62\nend\n",
-              "output-b5-62",
-              12.3,
-              12.7);
-    const double difference = relative_difference(fine, coarse);
-    deallog << "B5 reference, 62 vs 125 cells: largest difference "
-            << rounded(difference, 1) << " of the displacement range"
-            << std::endl;
-    check(difference < 0.005, "the B5 reference is not converged");
-  }
+  // 2. B5 at the benchmark strain, T = 20 s, 62 and 125 cells (the two
+  //    points nearest the middle on each grid).
+  const double b5 =
+    halving_change("B5-bar-large-reference-1d.prm",
+                   "subsection Time\n set End time = 20\n"
+                   " set Time step = 1e-2\nend\n"
+                   "subsection Output\n set Interval = 50\nend\n",
+                   "b5",
+                   TrackedGrid{125, 12.4, 12.6},
+                   TrackedGrid{62, 12.3, 12.7});
+  deallog << "B5 reference, 62 vs 125 cells: largest difference "
+          << rounded(b5, 1) << " of the displacement range" << std::endl;
+  check(b5 < 0.005, "the B5 reference is not converged");
 
   // 3. B6 at the benchmark strain, T = 0.5 s, 50 and 100 cells: the top.
-  {
-    const std::string common = "subsection Time\n set End time = 0.5\n"
-                               " set Time step = 1e-4\nend\n"
-                               "subsection Output\n set Interval = 100\nend\n";
-    const auto        fine =
-      history("B6-soil-column-large-reference-1d.prm",
-              common + "subsection Mesh\n set Subdivisions = 100\nend\n",
-              "output-b6-100",
-              0.99,
-              1.);
-    const auto coarse =
-      history("B6-soil-column-large-reference-1d.prm",
-              common + "subsection Mesh\n set Subdivisions = 50\nend\n",
-              "output-b6-50",
-              0.99,
-              1.);
-    const double difference = relative_difference(fine, coarse);
-    deallog << "B6 reference, 50 vs 100 cells: largest difference "
-            << rounded(difference, 1) << " of the top displacement range"
-            << std::endl;
-    check(difference < 0.005, "the B6 reference is not converged");
-  }
+  const double b6 =
+    halving_change("B6-soil-column-large-reference-1d.prm",
+                   "subsection Time\n set End time = 0.5\n"
+                   " set Time step = 1e-4\nend\n"
+                   "subsection Output\n set Interval = 100\nend\n",
+                   "b6",
+                   TrackedGrid{100, 0.99, 1.},
+                   TrackedGrid{50, 0.99, 1.});
+  deallog << "B6 reference, 50 vs 100 cells: largest difference "
+          << rounded(b6, 1) << " of the top displacement range" << std::endl;
+  check(b6 < 0.005, "the B6 reference is not converged");
 }

@@ -26,6 +26,30 @@ namespace MpmOtm
   {
     types::boundary_id    boundary_id;
     std::array<bool, dim> fixed;
+
+    /**
+     * Every component fixed on side @p side (a clamped end).
+     */
+    static FixedComponents
+    all(const types::boundary_id side)
+    {
+      FixedComponents condition{side, {}};
+      condition.fixed.fill(true);
+      return condition;
+    }
+
+    /**
+     * Only the component normal to side @p side fixed (a roller); the
+     * normal of side 2 d or 2 d + 1 is direction d.
+     */
+    static FixedComponents
+    normal(const types::boundary_id side)
+    {
+      FixedComponents condition{side, {}};
+      condition.fixed.fill(false);
+      condition.fixed[side / 2] = true;
+      return condition;
+    }
   };
 
   /**
