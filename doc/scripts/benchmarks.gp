@@ -4,20 +4,28 @@ set grid
 set key top right
 
 set output "figures/B1b-convergence.png"
-set title "B1b: RMS displacement error at T = 1e-3 (journal Fig. 6, P1 curves)"
+set title "B1b: RMS displacement error at T = 1e-3 (journal Fig. 6)"
 set logscale xy
 set xlabel "number of nodes"
 set ylabel "RMS displacement error"
 set format y "10^{%L}"
+set key bottom left
 plot "data/B1b-mpm-p1.dat" using 1:2 with linespoints lw 2 pt 7 title "mpm-otm, MPM-P1 (USL, lumped)", \
      "data/B1b-otm-p1.dat" using 1:2 with linespoints lw 2 pt 5 title "mpm-otm, OTM-P1 (consistent)", \
-     [8:512] 1.6e-4/x**2 with lines dt 2 lc rgb "gray" title "second order"
+     "data/B1b-bsmpm-p2.dat" using 1:2 with linespoints lw 2 pt 9 title "mpm-otm, BSMPM p = 2 (consistent)", \
+     "data/B1b-unified-p2.dat" using 1:2 with linespoints lw 2 pt 4 dt 2 title "mpm-otm, unified p = 2 (consistent)", \
+     [8:512] 1.6e-4/x**2 with lines dt 2 lc rgb "gray" title "second order", \
+     [8:64] 1.2e-4/x**3 with lines dt 3 lc rgb "black" title "third order"
+set key top right
 
 set output "figures/B2-convergence.png"
 set title "B2: RMS displacement error at T = 0.1, 12 points per cell (journal Fig. 8)"
 set xlabel "nodes in the material domain"
+set key bottom left
 plot "data/B2-convergence.dat" using 1:2 with linespoints lw 2 pt 7 title "mpm-otm, MPM-P1", \
      "data/B2-convergence.dat" using 1:3 with linespoints lw 2 pt 5 title "mpm-otm, OTM-P1", \
+     "data/B2-convergence.dat" using 1:4 with linespoints lw 2 pt 9 title "mpm-otm, BSMPM p = 2", \
+     "data/B2-convergence.dat" using 1:5 with linespoints lw 2 pt 4 title "mpm-otm, unified p = 2", \
      [17:257] 5e-4/x**2 with lines dt 2 lc rgb "gray" title "second order"
 
 set output "figures/B5-convergence.png"
@@ -64,14 +72,18 @@ set ylabel "sigma (Pa)"
 set key bottom left
 plot "data/B2-profile-otm.dat" using 1:5 with lines lw 3 lc rgb "gray" title "exact", \
      "data/B2-profile-mpm.dat" using 1:4 with points pt 7 ps 0.5 lc rgb "red" title "mpm-otm, MPM-P1", \
-     "data/B2-profile-otm.dat" using 1:4 with points pt 5 ps 0.5 lc rgb "blue" title "mpm-otm, OTM-P1"
+     "data/B2-profile-otm.dat" using 1:4 with points pt 5 ps 0.5 lc rgb "blue" title "mpm-otm, OTM-P1", \
+     "data/B2-profile-bsmpm.dat" using 1:4 with points pt 9 ps 0.6 lc rgb "dark-green" title "mpm-otm, BSMPM p = 2", \
+     "data/B2-profile-unified.dat" using 1:4 with points pt 4 ps 0.6 lc rgb "black" title "mpm-otm, unified p = 2"
 
 set output "figures/B2-displacement.png"
 set title "B2: displacement at T = 0.4 (journal Fig. 7)"
 set ylabel "u (m)"
 plot "data/B2-profile-otm.dat" using 1:3 with lines lw 3 lc rgb "gray" title "exact", \
      "data/B2-profile-mpm.dat" using 1:2 with points pt 7 ps 0.5 lc rgb "red" title "mpm-otm, MPM-P1", \
-     "data/B2-profile-otm.dat" using 1:2 with points pt 5 ps 0.5 lc rgb "blue" title "mpm-otm, OTM-P1"
+     "data/B2-profile-otm.dat" using 1:2 with points pt 5 ps 0.5 lc rgb "blue" title "mpm-otm, OTM-P1", \
+     "data/B2-profile-bsmpm.dat" using 1:2 with points pt 9 ps 0.6 lc rgb "dark-green" title "mpm-otm, BSMPM p = 2", \
+     "data/B2-profile-unified.dat" using 1:2 with points pt 4 ps 0.6 lc rgb "black" title "mpm-otm, unified p = 2"
 
 set output "figures/B5-large.png"
 set multiplot layout 2,1 title "B5 large deformation: middle of the bar (thesis Fig. 4.7)"
@@ -103,4 +115,16 @@ set ylabel "sigma_{11} (Pa)"
 set key top right
 plot "data/B3-sigma11.dat" using 1:3 with lines lw 3 lc rgb "gray" title "exact", \
      "data/B3-sigma11.dat" using 1:2 with points pt 7 ps 0.6 lc rgb "red" title "mpm-otm, MPM-P1", \
-     "data/B3-sigma11.dat" using 1:4 with points pt 5 ps 0.6 lc rgb "blue" title "mpm-otm, OTM-P1"
+     "data/B3-sigma11.dat" using 1:4 with points pt 5 ps 0.6 lc rgb "blue" title "mpm-otm, OTM-P1", \
+     "data/B3-sigma11.dat" using 1:5 with points pt 9 ps 0.6 lc rgb "dark-green" title "mpm-otm, BSMPM p = 2", \
+     "data/B3-sigma11.dat" using 1:6 with points pt 4 ps 0.6 lc rgb "black" title "mpm-otm, unified p = 2"
+
+set output "figures/B1b-stress-profile.png"
+set title "B1b: stress at T = 1e-3 with 32 nodes (journal Fig. 5)"
+set xlabel "X (m)"
+set ylabel "sigma (Pa)"
+set key top right
+plot "data/B1b-stress-profile.dat" using 1:2 with lines lw 3 lc rgb "gray" title "exact", \
+     "data/B1b-stress-profile.dat" using 1:3 with points pt 7 ps 0.5 lc rgb "red" title "mpm-otm, MPM-P1", \
+     "data/B1b-stress-profile.dat" using 1:4 with points pt 5 ps 0.5 lc rgb "blue" title "mpm-otm, OTM-P1", \
+     "data/B1b-stress-profile.dat" using 1:5 with points pt 4 ps 0.6 lc rgb "black" title "mpm-otm, unified p = 2"

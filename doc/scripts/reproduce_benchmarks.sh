@@ -42,10 +42,11 @@ track() {
   done | sort -g
 }
 
-echo "B1b: MPM-P1 and OTM-P1 RMS displacement error at T = 1e-3"
-for method in mpm otm; do
-  prm=B1b-bar-fixed-ends.prm
-  [ $method = otm ] && prm=B1b-bar-fixed-ends-otm.prm
+echo "B1b: RMS displacement error at T = 1e-3 (P1 and quadratic B-splines)"
+for entry in mpm-p1:B1b-bar-fixed-ends.prm otm-p1:B1b-bar-fixed-ends-otm.prm \
+             bsmpm-p2:B1b-bar-fixed-ends-bsmpm.prm unified-p2:B1b-bar-fixed-ends-unified.prm; do
+  name=${entry%%:*}
+  prm=${entry#*:}
   {
     echo "# nodes  rms_displacement_error  (prm/$prm)"
     for nodes in 8 16 32 64 128 256 512; do
@@ -57,8 +58,24 @@ subsection Output
 end"
       echo "$nodes $(last 6)"
     done
-  } > "$data/B1b-$method-p1.dat"
+  } > "$data/B1b-$name.dat"
 done
+
+echo "B1b: stress profiles at T with 32 nodes (journal Fig. 5)"
+for prm in B1b-bar-fixed-ends.prm B1b-bar-fixed-ends-otm.prm B1b-bar-fixed-ends-unified.prm; do
+  run $prm "subsection Output
+ set Interval = 0
+ set Write particle CSV = true
+end"
+  awk -F, 'NR > 1 { printf "%.8f %.8e\n", $2, $6 }' run/particles-00100.csv | sort -g > "$prm.dat"
+done
+{
+  echo "# X  sigma_exact  sigma_MPM_P1  sigma_OTM_P1  sigma_unified_p2  (32 nodes, T = 1e-3)"
+  paste -d' ' B1b-bar-fixed-ends.prm.dat <(cut -d' ' -f2 B1b-bar-fixed-ends-otm.prm.dat) \
+    <(cut -d' ' -f2 B1b-bar-fixed-ends-unified.prm.dat) |
+    awk '{ pi = 3.14159265358979; c = sqrt(4e3)
+           printf "%s %.8e %s %s %s\n", $1, 0.6 * sqrt(4e3) * sin(pi * c * 1e-3) * cos(pi * $1), $2, $3, $4 }'
+} > "$data/B1b-stress-profile.dat"
 
 echo "B1a: RMS stress error of MPM and OTM over the first 20 steps"
 run B1a-bar-fixed-ends-conference.prm "set Method = MPM"
@@ -71,7 +88,7 @@ cut -d, -f8 run/statistics.csv | tail -n +2 > otm.csv
 } > "$data/B1a-stress-error.dat"
 
 echo "B2: profiles at T = 0.4 and convergence at T = 0.1"
-for method in mpm otm; do
+for method in mpm otm bsmpm unified; do
   run B2-traction-bar-$method.prm ""
   {
     echo "# X  u  u_exact  sigma  sigma_exact  (prm/B2-traction-bar-$method.prm, T = 0.4)"
@@ -83,21 +100,8 @@ for method in mpm otm; do
       run/particles-04000.csv | sort -g
   } > "$data/B2-profile-$method.dat"
 done
-{
-  echo "# material_nodes  rms_displacement_error_MPM  rms_displacement_error_OTM  (T = 0.1, 12 points per cell)"
-  for nodes in 5 9 17 33 65 129 257; do
-    run B2-traction-bar-convergence.prm "subsection Mesh
- set Subdivisions = $((5 * (nodes - 1) / 4))
-end
-subsection Output
- set Write particle CSV = false
-end"
-    mpm=$(last 6)
-    run B2-traction-bar-otm.prm "subsection Time
+short="subsection Time
  set End time = 0.1
-end
-subsection Mesh
- set Subdivisions = $((nodes - 1))
 end
 subsection Particles
  set Particles per cell = 12
@@ -105,7 +109,34 @@ end
 subsection Output
  set Write particle CSV = false
 end"
-    echo "$nodes $mpm $(last 6)"
+{
+  echo "# material_nodes  rms_displacement_error: MPM-P1  OTM-P1  BSMPM  unified  (T = 0.1, 12 points per cell)"
+  for nodes in 5 9 17 33 65 129 257; do
+    fixed_grid="subsection Mesh
+ set Subdivisions = $((5 * (nodes - 1) / 4))
+end"
+    material_grid="subsection Mesh
+ set Subdivisions = $((nodes - 1))
+end"
+    run B2-traction-bar-convergence.prm "$fixed_grid
+subsection Output
+ set Write particle CSV = false
+end"
+    mpm=$(last 6)
+    run B2-traction-bar-otm.prm "$short
+$material_grid"
+    otm=$(last 6)
+    run B2-traction-bar-convergence.prm "$fixed_grid
+set Shape functions = B-spline
+set B-spline degree = 2
+set Mass matrix = consistent
+subsection Output
+ set Write particle CSV = false
+end"
+    bsmpm=$(last 6)
+    run B2-traction-bar-unified.prm "$short
+$material_grid"
+    echo "$nodes $mpm $otm $bsmpm $(last 6)"
   done
 } > "$data/B2-convergence.dat"
 
@@ -158,16 +189,22 @@ track top 1e-4 > mpm.dat
 } > "$data/B6-large.dat"
 
 echo "B3: sigma11 along X2 = 0.0664 at T = 3.5e-3"
-run B3-plate-manufactured-otm.prm "subsection Output
+: > "$data/B3-errors.dat"
+for method in otm bsmpm unified; do
+  run B3-plate-manufactured-$method.prm "subsection Output
  set Interval = 0
 end"
-awk -F, 'NR > 1 && ($3 - 0.06640625)^2 < 1e-18 { printf "%.8f %.8e\n", $2, $10 }' \
-  run/particles-00035.csv | sort -g > otm.dat
+  awk -F, 'NR > 1 && ($3 - 0.06640625)^2 < 1e-18 { printf "%.8f %.8e\n", $2, $10 }' \
+    run/particles-00035.csv | sort -g > $method.dat
+  echo "$method $(last 6) $(last 8)" >> "$data/B3-errors.dat"
+done
 run B3-plate-manufactured.prm "subsection Output
  set Interval = 0
 end"
+echo "mpm $(last 6) $(last 8)" >> "$data/B3-errors.dat"
+sed -i '1i # method  rms_displacement_error  rms_stress_error  (T = 3.5e-3, prm/B3-plate-manufactured*.prm)' "$data/B3-errors.dat"
 {
-  echo "# X1  sigma11_MPM_P1  sigma11_exact  sigma11_OTM_P1  (prm/B3-plate-manufactured.prm, -otm.prm)"
+  echo "# X1  sigma11_MPM_P1  sigma11_exact  sigma11_OTM_P1  sigma11_BSMPM  sigma11_unified  (prm/B3-plate-manufactured*.prm)"
   awk -F, 'NR > 1 && ($3 - 0.06640625)^2 < 1e-18 {
       pi = 3.14159265358979; E = 1e7; nu = 0.3; rho = 1000; A = 0.005; t = 3.5e-3
       lambda = E * nu / ((1 + nu) * (1 - 2 * nu)); mu = E / (2 * (1 + nu)); c = sqrt(E / rho)
@@ -175,7 +212,8 @@ end"
       F2 = 1 + 2 * pi * A * cos(2 * pi * $3) * sin(c * pi * t + pi)
       J = F1 * F2
       printf "%.8f %.8e %.8e\n", $2, $10, (lambda * log(J) + mu * (F1 * F1 - 1)) / J }' \
-    run/particles-00035.csv | sort -g | paste -d' ' - <(cut -d' ' -f2 otm.dat)
+    run/particles-00035.csv | sort -g |
+    paste -d' ' - <(cut -d' ' -f2 otm.dat) <(cut -d' ' -f2 bsmpm.dat) <(cut -d' ' -f2 unified.dat)
 } > "$data/B3-sigma11.dat"
 
 echo "Plots"

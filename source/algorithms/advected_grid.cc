@@ -1,5 +1,3 @@
-#include <deal.II/fe/fe.h>
-
 #include <mpm_otm/algorithms/advected_grid.h>
 #include <mpm_otm/base/collective_error.h>
 #include <mpm_otm/grid_system/background_grid.h>
@@ -99,16 +97,8 @@ namespace MpmOtm
                                 const NodalSystem<dim>    &system,
                                 const double               stable_cell_size)
   {
-    stable_size                    = stable_cell_size;
-    const DoFHandler<dim>    &dofs = shape_functions.dof_handler();
-    const FiniteElement<dim> &fe   = dofs.get_fe();
-    vertices_per_cell              = fe.reference_cell().n_vertices();
-    AssertThrow(fe.n_dofs_per_vertex() == 1 &&
-                  fe.n_dofs_per_cell() == vertices_per_cell,
-                ExcMessage("Method = OTM or Unified moves the grid's vertices "
-                           "with the coefficients of the shape functions, "
-                           "which needs exactly one function per vertex "
-                           "(Shape functions = linear)."));
+    stable_size       = stable_cell_size;
+    vertices_per_cell = grid.triangulation().begin_active()->n_vertices();
 
     triangulation                                  = &grid.triangulation();
     const Utilities::MPI::Partitioner &partitioner = system.partitioner();
@@ -121,7 +111,7 @@ namespace MpmOtm
     orientations.clear();
     boundary_faces.clear();
 
-    for (const auto &cell : dofs.active_cell_iterators())
+    for (const auto &cell : grid.triangulation().active_cell_iterators())
       {
         if (cell->is_artificial())
           continue;
@@ -132,8 +122,16 @@ namespace MpmOtm
               {
                 position = vertex_positions.size();
                 vertex_positions.push_back(&cell->vertex(v));
+                const types::global_dof_index function =
+                  shape_functions.vertex_function(cell, v);
+                AssertThrow(function != numbers::invalid_dof_index,
+                            ExcMessage(
+                              "Method = OTM or Unified moves the grid's "
+                              "vertices with the coefficients of the shape "
+                              "functions, which needs exactly one function "
+                              "per vertex (Shape functions = linear)."));
                 vertex_functions.push_back(
-                  partitioner.global_to_local(cell->vertex_dof_index(v, 0)));
+                  partitioner.global_to_local(function));
               }
             if (cell->is_locally_owned())
               owned_cell_vertices.push_back(position);

@@ -13,7 +13,7 @@ namespace MpmOtm
   TimeStepper<dim>::TimeStepper(MaterialPoints<dim>       &material_points,
                                 const ShapeFunctions<dim> &shape_functions,
                                 NodalSystem<dim>          &system,
-                                const MassMatrix<dim>     &mass_matrix,
+                                MassMatrix<dim>           &mass_matrix,
                                 const NodalUpdate<dim>    &nodal_update,
                                 GridMotion<dim>           &grid_motion,
                                 const Material<dim>       &material,
@@ -49,6 +49,7 @@ namespace MpmOtm
                       !grid_motion.tractions_on_grid_faces());
       grid_motion.add_face_tractions(problem, time, system);
       system.finish_assembly();
+      mass_matrix.assemble(system, data);
     }
     if (nodal_update.needs_nodal_accelerations())
       {

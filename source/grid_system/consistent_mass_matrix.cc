@@ -4,6 +4,8 @@
 #include <mpm_otm/base/plugins.h>
 #include <mpm_otm/grid_system/consistent_mass_matrix.h>
 
+#include <algorithm>
+
 
 namespace MpmOtm
 {
@@ -62,6 +64,64 @@ namespace MpmOtm
     };
 
     /**
+     * y = M x from the dense blocks of groups of points with the same
+     * functions, and the identity on the excluded coefficients.
+     */
+    template <int dim>
+    class GroupMassOperator
+    {
+    public:
+      using VectorType = typename NodalSystem<dim>::VectorType;
+
+      GroupMassOperator(const std::vector<unsigned int> &group_offsets,
+                        const std::vector<unsigned int> &group_indices,
+                        const std::vector<unsigned int> &block_offsets,
+                        const std::vector<double>       &group_blocks,
+                        const std::vector<unsigned int> &excluded)
+        : group_offsets(group_offsets)
+        , group_indices(group_indices)
+        , block_offsets(block_offsets)
+        , group_blocks(group_blocks)
+        , excluded(excluded)
+      {}
+
+      void
+      vmult(VectorType &dst, const VectorType &src) const
+      {
+        src.update_ghost_values();
+        dst             = 0.;
+        const double *x = src.get_values();
+        double       *y = dst.get_values();
+        for (unsigned int g = 0; g + 1 < group_offsets.size(); ++g)
+          {
+            const unsigned int *indices = &group_indices[group_offsets[g]];
+            const unsigned int  n     = group_offsets[g + 1] - group_offsets[g];
+            const double       *block = &group_blocks[block_offsets[g]];
+            for (unsigned int a = 0; a < n; ++a)
+              {
+                double sum = 0.;
+                for (unsigned int b = 0; b < n; ++b)
+                  sum += block[a * n + b] * x[indices[b]];
+                y[indices[a]] += sum;
+              }
+          }
+        dst.compress(VectorOperation::add);
+        src.zero_out_ghost_values();
+        for (const unsigned int i : excluded)
+          dst.local_element(i) = src.local_element(i);
+      }
+
+    private:
+      const std::vector<unsigned int> &group_offsets;
+      const std::vector<unsigned int> &group_indices;
+      const std::vector<unsigned int> &block_offsets;
+      const std::vector<double>       &group_blocks;
+      const std::vector<unsigned int> &excluded;
+    };
+
+
+
+    /**
      * Jacobi preconditioner with the lumped masses.
      */
     template <int dim>
@@ -101,6 +161,49 @@ namespace MpmOtm
 
   template <int dim>
   void
+  ConsistentMassMatrix<dim>::assemble(const NodalSystem<dim>       &system,
+                                      const ParticleShapeData<dim> &shape_data)
+  {
+    group_offsets.assign(1, 0);
+    group_indices.clear();
+    block_offsets.assign(1, 0);
+    group_blocks.clear();
+    // Consecutive points with the same function indices form a group.
+    std::size_t  point_pass_cost = 0;
+    unsigned int group_start     = 0;
+    for (unsigned int k = 0; k < shape_data.n_particles(); ++k)
+      {
+        const unsigned int  begin   = shape_data.offsets[k];
+        const unsigned int  n       = shape_data.offsets[k + 1] - begin;
+        const unsigned int *indices = &shape_data.indices[begin];
+        point_pass_cost += 2 * n;
+        const bool same =
+          k > 0 && group_indices.size() - group_start == n &&
+          std::equal(indices, indices + n, group_indices.begin() + group_start);
+        if (!same)
+          {
+            group_start = group_indices.size();
+            group_indices.insert(group_indices.end(), indices, indices + n);
+            group_offsets.push_back(group_indices.size());
+            group_blocks.resize(group_blocks.size() + n * n, 0.);
+            block_offsets.push_back(group_blocks.size());
+          }
+        double       *block = &group_blocks[block_offsets.back() - n * n];
+        const double  m     = system.particle_mass[k];
+        const double *phi   = &shape_data.values[begin];
+        for (unsigned int a = 0; a < n; ++a)
+          for (unsigned int b = 0; b < n; ++b)
+            block[a * n + b] += m * phi[a] * phi[b];
+      }
+    use_groups = group_blocks.size() < point_pass_cost;
+    // block_offsets holds the end of each block: make it the start.
+    block_offsets.pop_back();
+  }
+
+
+
+  template <int dim>
+  void
   ConsistentMassMatrix<dim>::solve(const NodalSystem<dim>       &system,
                                    const ParticleShapeData<dim> &shape_data,
                                    const VectorType  &right_hand_side,
@@ -127,15 +230,27 @@ namespace MpmOtm
     for (const unsigned int i : excluded)
       solution.local_element(i) = 0.;
 
-    const ParticleMassOperator<dim>     mass_operator(shape_data,
-                                                  system.particle_mass,
-                                                  excluded);
     const LumpedMassPreconditioner<dim> preconditioner(system.lumped_mass);
     SolverControl        control(1000, 1e-13 * norm, false, false);
     SolverCG<VectorType> cg(control);
     try
       {
-        cg.solve(mass_operator, solution, rhs, preconditioner);
+        if (use_groups)
+          cg.solve(GroupMassOperator<dim>(group_offsets,
+                                          group_indices,
+                                          block_offsets,
+                                          group_blocks,
+                                          excluded),
+                   solution,
+                   rhs,
+                   preconditioner);
+        else
+          cg.solve(ParticleMassOperator<dim>(shape_data,
+                                             system.particle_mass,
+                                             excluded),
+                   solution,
+                   rhs,
+                   preconditioner);
       }
     catch (const SolverControl::NoConvergence &failure)
       {

@@ -1,5 +1,3 @@
-#include <deal.II/dofs/dof_tools.h>
-
 #include <mpm_otm/grid_system/nodal_system.h>
 #include <mpm_otm/material_points/material_points.h>
 #include <mpm_otm/shape_functions/shape_functions.h>
@@ -15,13 +13,10 @@ namespace MpmOtm
     const ShapeFunctions<dim>               &shape_functions,
     const std::vector<FixedComponents<dim>> &fixed_components)
   {
-    const DoFHandler<dim> &dofs = shape_functions.dof_handler();
-    IndexSet               relevant;
-    DoFTools::extract_locally_relevant_dofs(dofs, relevant);
     index_partition = std::make_shared<Utilities::MPI::Partitioner>(
-      dofs.locally_owned_dofs(),
-      relevant,
-      dofs.get_triangulation().get_communicator());
+      shape_functions.locally_owned_functions(),
+      shape_functions.locally_relevant_functions(),
+      shape_functions.dof_handler().get_triangulation().get_communicator());
 
     lumped_mass.reinit(index_partition);
     for (unsigned int c = 0; c < dim; ++c)

@@ -262,22 +262,28 @@ namespace MpmOtm
                                     const ShapeFunctions<dim> &shape_functions,
                                     NodalSystem<dim>          &system)
   {
+    // The coefficient fields sum_i c_i phi_i, written in the element the
+    // cells carry (for B-splines: their Bernstein form on every cell).
     DataOut<dim> data_out;
     data_out.attach_dof_handler(shape_functions.dof_handler());
+    std::array<typename ShapeFunctions<dim>::VectorType, dim + 1> fields;
     system.lumped_mass.update_ghost_values();
-    data_out.add_data_vector(system.lumped_mass, "nodal_mass");
+    shape_functions.to_cell_dofs(system.lumped_mass, fields[dim]);
+    data_out.add_data_vector(fields[dim], "nodal_mass");
     const std::string names = "xyz";
     for (unsigned int c = 0; c < dim; ++c)
       {
         system.velocity[c].update_ghost_values();
-        data_out.add_data_vector(system.velocity[c],
+        shape_functions.to_cell_dofs(system.velocity[c], fields[c]);
+        data_out.add_data_vector(fields[c],
                                  std::string("nodal_velocity_") + names[c]);
       }
     Vector<float> subdomain(grid.triangulation().n_active_cells());
     for (auto &value : subdomain)
       value = grid.triangulation().locally_owned_subdomain();
     data_out.add_data_vector(subdomain, "subdomain");
-    data_out.build_patches(grid.mapping());
+    data_out.build_patches(grid.mapping(),
+                           shape_functions.dof_handler().get_fe().degree);
     const std::string record =
       data_out.write_vtu_with_pvtu_record(output_directory + "/",
                                           "grid",

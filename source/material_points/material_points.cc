@@ -465,19 +465,29 @@ namespace MpmOtm
     };
     std::vector<Moved> moved;
     bool               all_local = true;
+    // The points of a cell come one after the other: its corner and sizes
+    // are looked up once.
+    typename Triangulation<dim>::active_cell_iterator current_cell;
+    Point<dim>                                        origin;
+    std::array<double, dim>                           inverse_size{};
     for (auto particle = particles->begin(); particle != particles->end();
          ++particle)
       {
-        const auto       cell     = particle->get_surrounding_cell();
+        const auto cell = particle->get_surrounding_cell();
+        if (cell != current_cell)
+          {
+            current_cell = cell;
+            origin       = cell->vertex(0);
+            for (unsigned int d = 0; d < dim; ++d)
+              inverse_size[d] = 1. / (cell->vertex(1u << d)[d] - origin[d]);
+          }
         const Point<dim> location = particle->get_location();
-        const Point<dim> origin   = cell->vertex(0);
         Point<dim>       reference;
         bool             inside = true;
         for (unsigned int d = 0; d < dim; ++d)
           {
-            reference[d] = (location[d] - origin[d]) /
-                           (cell->vertex(1u << d)[d] - origin[d]);
-            inside = inside && reference[d] >= 0. && reference[d] <= 1.;
+            reference[d] = (location[d] - origin[d]) * inverse_size[d];
+            inside       = inside && reference[d] >= 0. && reference[d] <= 1.;
           }
         if (inside)
           {
@@ -504,7 +514,24 @@ namespace MpmOtm
             all_local = false;
             break;
           }
-        moved.push_back({particle, owned_cell_of_block[linear]});
+        // On a grid whose knots have moved (unified approach with
+        // B-splines) the block arithmetic is only a guess: check it.
+        const auto      &candidate = owned_cell_of_block[linear];
+        const Point<dim> corner    = candidate->vertex(0);
+        inside                     = true;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            reference[d] = (location[d] - corner[d]) /
+                           (candidate->vertex(1u << d)[d] - corner[d]);
+            inside =
+              inside && reference[d] >= -1e-12 && reference[d] <= 1. + 1e-12;
+          }
+        if (!inside)
+          {
+            all_local = false;
+            break;
+          }
+        moved.push_back({particle, candidate});
       }
     if (Utilities::MPI::min(all_local ? 1 : 0, communicator()) == 0)
       return false;

@@ -21,6 +21,15 @@ namespace MpmOtm
                       "[0, l] in x, so Mesh/Lower corner must be 0 in x, "
                       "Mesh/Upper corner at least l, and l must lie on a "
                       "block boundary of the grid (Mesh/Subdivisions).");
+    prm.declare_entry("Amplitude",
+                      "1",
+                      Patterns::Double(),
+                      "Factor A on the stress of journal Eq. 103 and so on "
+                      "the traction and the exact solution. A = 1 is Eq. 103 "
+                      "as printed: the pulse compresses the bar first and its "
+                      "free end moves inward. A = -1 pulls the free end "
+                      "outward first, into the grid's empty cells (the "
+                      "set-up in which the journal's BSMPM breaks down).");
     prm.leave_subsection();
   }
 
@@ -31,7 +40,8 @@ namespace MpmOtm
   TractionBar<dim>::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Traction bar");
-    length = prm.get_double("Bar length");
+    length    = prm.get_double("Bar length");
+    amplitude = prm.get_double("Amplitude");
     prm.leave_subsection();
     AssertThrow(length > 0.,
                 ExcMessage("Traction bar/Bar length must be positive."));
@@ -166,7 +176,7 @@ namespace MpmOtm
   {
     // Eq. 103: the pulse entering from X = l, f(c t + X), plus its
     // reflection at the fixed end, f(c t - X).
-    return pulse(c * time + X) + pulse(c * time - X);
+    return amplitude * (pulse(c * time + X) + pulse(c * time - X));
   }
 
 
@@ -179,7 +189,8 @@ namespace MpmOtm
     // (1/M) int_0^X (f(c t + s) + f(c t - s)) ds
     //   = (1/M) [(g(c t + X) - g(c t)) - (g(c t - X) - g(c t))].
     Tensor<1, dim> u;
-    u[0] = (pulse_integral(c * time + X[0]) - pulse_integral(c * time - X[0])) /
+    u[0] = amplitude *
+           (pulse_integral(c * time + X[0]) - pulse_integral(c * time - X[0])) /
            modulus;
     return u;
   }

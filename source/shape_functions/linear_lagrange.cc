@@ -33,10 +33,68 @@ namespace MpmOtm
 
 
   template <int dim>
+  types::global_dof_index
+  LinearLagrange<dim>::n_functions() const
+  {
+    return dofs.n_dofs();
+  }
+
+
+
+  template <int dim>
+  IndexSet
+  LinearLagrange<dim>::locally_owned_functions() const
+  {
+    return dofs.locally_owned_dofs();
+  }
+
+
+
+  template <int dim>
+  IndexSet
+  LinearLagrange<dim>::locally_relevant_functions() const
+  {
+    IndexSet relevant;
+    DoFTools::extract_locally_relevant_dofs(dofs, relevant);
+    return relevant;
+  }
+
+
+
+  template <int dim>
+  types::global_dof_index
+  LinearLagrange<dim>::vertex_function(
+    const typename Triangulation<dim>::active_cell_iterator &cell,
+    const unsigned int                                       v) const
+  {
+    return
+      typename DoFHandler<dim>::active_cell_iterator(&cell->get_triangulation(),
+                                                     cell->level(),
+                                                     cell->index(),
+                                                     &dofs)
+        ->vertex_dof_index(v, 0);
+  }
+
+
+
+  template <int dim>
   const DoFHandler<dim> &
   LinearLagrange<dim>::dof_handler() const
   {
     return dofs;
+  }
+
+
+
+  template <int dim>
+  void
+  LinearLagrange<dim>::to_cell_dofs(
+    const typename ShapeFunctions<dim>::VectorType &coefficients,
+    typename ShapeFunctions<dim>::VectorType       &values) const
+  {
+    values.reinit(coefficients.get_partitioner());
+    values = coefficients;
+    values.update_ghost_values();
   }
 
 

@@ -1,6 +1,7 @@
 #include <deal.II/base/timer.h>
 
 #include <mpm_otm/algorithms/advected_grid.h>
+#include <mpm_otm/algorithms/advected_knots.h>
 #include <mpm_otm/algorithms/fixed_grid.h>
 #include <mpm_otm/algorithms/nodal_update.h>
 #include <mpm_otm/algorithms/optimal_transportation_update.h>
@@ -13,6 +14,7 @@
 #include <mpm_otm/material_points/material_points.h>
 #include <mpm_otm/materials/material.h>
 #include <mpm_otm/problems/problem.h>
+#include <mpm_otm/shape_functions/b_splines.h>
 #include <mpm_otm/shape_functions/shape_functions.h>
 #include <mpm_otm/simulator/simulator.h>
 
@@ -166,6 +168,7 @@ namespace MpmOtm
     problem_description->parse_parameters(prm);
     shape_functions =
       PluginRegistry<ShapeFunctions<dim>>::create(prm.get("Shape functions"));
+    shape_functions->parse_parameters(prm);
     const std::string method = prm.get("Method");
     if (method == "OTM")
       {
@@ -179,8 +182,11 @@ namespace MpmOtm
                       "Method = OTM needs linearly complete shape "
                       "functions (journal Eq. 47); Shape functions = " +
                       prm.get("Shape functions") +
+                      (prm.get("Shape functions") == "B-spline" ?
+                         " of degree " + prm.get("B-spline degree") :
+                         std::string()) +
                       " are not. Use Method = MPM or Unified, or "
-                      "linearly complete functions."));
+                      "linearly complete functions (B-spline degree = 1)."));
         nodal_update = std::make_unique<OptimalTransportationUpdate<dim>>();
         if (prm.get("Mass matrix") != "consistent")
           pcout << "Note: OTM with Mass matrix = " << prm.get("Mass matrix")
@@ -193,6 +199,9 @@ namespace MpmOtm
         PluginRegistry<NodalUpdate<dim>>::create(prm.get("Update scheme"));
     if (method == "MPM")
       grid_motion = std::make_unique<FixedGrid<dim>>();
+    else if (auto *splines =
+               dynamic_cast<BSplines<dim> *>(shape_functions.get()))
+      grid_motion = std::make_unique<AdvectedKnots<dim>>(*splines);
     else
       grid_motion = std::make_unique<AdvectedGrid<dim>>();
     mass_matrix =
@@ -291,7 +300,7 @@ namespace MpmOtm
 
     pcout << "mpm-otm: " << dim << "D, "
           << grid->triangulation().n_global_active_cells() << " cells, "
-          << shape_functions->dof_handler().n_dofs() << " shape functions, "
+          << shape_functions->n_functions() << " shape functions, "
           << points->n_global_points() << " material points, "
           << Utilities::MPI::n_mpi_processes(communicator) << " MPI rank(s)"
           << std::endl;
@@ -393,10 +402,10 @@ namespace MpmOtm
 
 
   template <int dim>
-  const DoFHandler<dim> &
-  Simulator<dim>::dof_handler() const
+  const ShapeFunctions<dim> &
+  Simulator<dim>::shape_function_family() const
   {
-    return shape_functions->dof_handler();
+    return *shape_functions;
   }
 
 

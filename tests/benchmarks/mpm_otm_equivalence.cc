@@ -18,6 +18,7 @@
 
 #include <mpm_otm/grid_system/background_grid.h>
 #include <mpm_otm/grid_system/nodal_system.h>
+#include <mpm_otm/shape_functions/shape_functions.h>
 
 #include <fstream>
 
@@ -53,7 +54,8 @@ namespace
     double      difference = 0;
     double      largest    = 0;
     double      extent     = 0;
-    for (const auto &cell : otm->dof_handler().active_cell_iterators())
+    for (const auto &cell :
+         otm->shape_function_family().dof_handler().active_cell_iterators())
       for (const unsigned int v : cell->vertex_indices())
         {
           const types::global_dof_index i = cell->vertex_dof_index(v, 0);

@@ -49,7 +49,7 @@ namespace MpmOtm
     TimeStepper(MaterialPoints<dim>       &material_points,
                 const ShapeFunctions<dim> &shape_functions,
                 NodalSystem<dim>          &system,
-                const MassMatrix<dim>     &mass_matrix,
+                MassMatrix<dim>           &mass_matrix,
                 const NodalUpdate<dim>    &nodal_update,
                 GridMotion<dim>           &grid_motion,
                 const Material<dim>       &material,
@@ -72,7 +72,7 @@ namespace MpmOtm
     MaterialPoints<dim>       &material_points;
     const ShapeFunctions<dim> &shape_functions;
     NodalSystem<dim>          &system;
-    const MassMatrix<dim>     &mass_matrix;
+    MassMatrix<dim>           &mass_matrix;
     const NodalUpdate<dim>    &nodal_update;
     GridMotion<dim>           &grid_motion;
     const Material<dim>       &material;

@@ -21,6 +21,14 @@ namespace MpmOtm
     virtual ~MassMatrix() = default;
 
     /**
+     * Prepare the solves of a step, after the system has been assembled from
+     * @p shape_data (the same data every solve of the step gets).
+     */
+    virtual void
+    assemble(const NodalSystem<dim> &, const ParticleShapeData<dim> &)
+    {}
+
+    /**
      * Solve M @p solution = @p right_hand_side for velocity component
      * @p component; @p solution has the layout of the system's vectors.
      */

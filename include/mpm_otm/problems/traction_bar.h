@@ -30,7 +30,8 @@ namespace MpmOtm
    * antiderivative of f) and M = rho c^2 = lambda + 2 mu (E for nu = 0); the
    * lateral stresses are lambda / (lambda + 2 mu) sigma_xx. The run itself
    * is finite strain (neo-Hookean, strain about 1 / M), so agreement is
-   * close but not exact.
+   * close but not exact. The parameter Amplitude A multiplies stress,
+   * traction and displacement (A = -1 pulls the free end outward first).
    */
   template <int dim>
   class TractionBar : public Problem<dim>
@@ -102,11 +103,13 @@ namespace MpmOtm
     double
     axial_stress(const double X, const double time) const;
 
-    double length  = 1;
-    double omega   = 0;
-    double c       = 0;
-    double modulus = 0;
-    double lateral = 0;
+    double length = 1;
+    /// Factor A on the stress of Eq. 103.
+    double amplitude = 1;
+    double omega     = 0;
+    double c         = 0;
+    double modulus   = 0;
+    double lateral   = 0;
   };
 } // namespace MpmOtm
 

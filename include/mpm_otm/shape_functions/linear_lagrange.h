@@ -28,8 +28,27 @@ namespace MpmOtm
     void
     initialize(const BackgroundGrid<dim> &grid) override;
 
+    types::global_dof_index
+    n_functions() const override;
+
+    IndexSet
+    locally_owned_functions() const override;
+
+    IndexSet
+    locally_relevant_functions() const override;
+
+    types::global_dof_index
+    vertex_function(
+      const typename Triangulation<dim>::active_cell_iterator &cell,
+      const unsigned int v) const override;
+
     const DoFHandler<dim> &
     dof_handler() const override;
+
+    void
+    to_cell_dofs(
+      const typename ShapeFunctions<dim>::VectorType &coefficients,
+      typename ShapeFunctions<dim>::VectorType       &values) const override;
 
     void
     evaluate(const MaterialPoints<dim>         &material_points,

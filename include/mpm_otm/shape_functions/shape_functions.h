@@ -2,8 +2,10 @@
 #define mpm_otm_shape_functions_shape_functions_h
 
 #include <deal.II/base/index_set.h>
+#include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/partitioner.h>
 #include <deal.II/dofs/dof_handler.h>
+#include <deal.II/lac/la_parallel_vector.h>
 
 #include <mpm_otm/shape_functions/particle_shape_data.h>
 
@@ -17,31 +19,58 @@ namespace MpmOtm
   class MaterialPoints;
 
   /**
-   * A family of shape functions on the background grid (linear Lagrange;
-   * later B-splines, max-ent, Powell-Sabin). The rest of the code only asks
+   * A family of shape functions on the background grid (linear Lagrange,
+   * B-splines; later max-ent, Powell-Sabin). The rest of the code only asks
    * it "for each material point: the indices, values and gradients of the
-   * functions that do not vanish there" (journal Alg. 1, step 3) and which
-   * functions carry a Dirichlet condition on a boundary. The functions are
-   * numbered by a DoFHandler of the family's finite element, which also gives
-   * the parallel partition.
+   * functions that do not vanish there" (journal Alg. 1, step 3), how the
+   * functions are numbered and distributed over the MPI ranks, and which
+   * functions carry a Dirichlet condition on a boundary.
+   *
+   * Every cell of the grid carries a deal.II finite element (FE_Q(1),
+   * FE_SimplexP(1), FE_Bernstein(p)): for the linear family its degrees of
+   * freedom are the functions; for B-splines the functions restricted to a
+   * cell are a fixed combination of that element's Bernstein polynomials.
+   * Grid output writes fields in the cells' element.
    */
   template <int dim>
   class ShapeFunctions
   {
   public:
+    using VectorType = LinearAlgebra::distributed::Vector<double>;
+
     virtual ~ShapeFunctions() = default;
 
     /**
-     * Set up the functions on @p grid (distribute the degrees of freedom).
+     * Read the family's own parameters (declared by the plugin's static
+     * declare_parameters()).
+     */
+    virtual void
+    parse_parameters(ParameterHandler &)
+    {}
+
+    /**
+     * Set up the functions on @p grid.
      */
     virtual void
     initialize(const BackgroundGrid<dim> &grid) = 0;
 
     /**
-     * The numbering of the functions.
+     * Number of functions on all ranks.
      */
-    virtual const DoFHandler<dim> &
-    dof_handler() const = 0;
+    virtual types::global_dof_index
+    n_functions() const = 0;
+
+    /**
+     * The functions whose coefficients this rank owns; a contiguous range.
+     */
+    virtual IndexSet
+    locally_owned_functions() const = 0;
+
+    /**
+     * The functions that do not vanish on some locally owned cell.
+     */
+    virtual IndexSet
+    locally_relevant_functions() const = 0;
 
     /**
      * Evaluate the functions at every locally owned material point; indices
@@ -65,6 +94,31 @@ namespace MpmOtm
      */
     virtual bool
     is_linearly_complete() const = 0;
+
+    /**
+     * The function that belongs to vertex @p v of @p cell, for families with
+     * one function per vertex that moves with it (OTM and the unified
+     * approach on a moving grid); numbers::invalid_dof_index otherwise.
+     */
+    virtual types::global_dof_index
+    vertex_function(
+      const typename Triangulation<dim>::active_cell_iterator &cell,
+      const unsigned int                                       v) const = 0;
+
+    /**
+     * The DoFHandler of the finite element the cells carry.
+     */
+    virtual const DoFHandler<dim> &
+    dof_handler() const = 0;
+
+    /**
+     * The field sum_i c_i phi_i with coefficients @p coefficients (ghost
+     * values up to date) written in the cells' finite element: @p values is
+     * set up here on the locally relevant degrees of freedom of
+     * dof_handler(), with up-to-date ghost values.
+     */
+    virtual void
+    to_cell_dofs(const VectorType &coefficients, VectorType &values) const = 0;
   };
 } // namespace MpmOtm
 

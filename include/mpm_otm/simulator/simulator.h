@@ -104,10 +104,10 @@ namespace MpmOtm
     background_grid() const;
 
     /**
-     * The numbering of the shape functions.
+     * The shape functions (their numbering and the cells' finite element).
      */
-    const DoFHandler<dim> &
-    dof_handler() const;
+    const ShapeFunctions<dim> &
+    shape_function_family() const;
 
     /**
      * The nodal system of the last step.
