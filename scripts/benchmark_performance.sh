@@ -6,10 +6,13 @@
 # lines, so set-up and output are excluded), peak resident memory
 # (/usr/bin/time -v), and memory per point beyond that of a run with one
 # cell (libraries, MPI).
-# Usage: scripts/benchmark_performance.sh [path to mpm-otm]
+# Usage: scripts/benchmark_performance.sh [path to mpm-otm] [parameter lines]
+# The optional parameter lines are appended to the file, e.g.
+# 'set Shape functions = B-spline' for quadratic B-splines.
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 exe=${1:-$root/build-release/mpm-otm}
+extra=${2:-}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cd "$work"
@@ -17,7 +20,7 @@ cd "$work"
 # run NX NY: prints "points seconds_of_time_loop peak_kB"
 run() {
   cp "$root/prm/performance-bar-2d.prm" run.prm
-  printf 'subsection Mesh\n set Subdivisions = %s, %s\nend\n' "$1" "$2" >> run.prm
+  printf 'subsection Mesh\n set Subdivisions = %s, %s\nend\n%s\n' "$1" "$2" "$extra" >> run.prm
   /usr/bin/time -v "$exe" run.prm > log 2> time.log
   points=$(grep -o '[0-9]* material points' log | cut -d' ' -f1)
   t0=$(grep '^step  *0 ' log | sed 's/.*wall time = \([0-9.]*\) s/\1/')

@@ -17,6 +17,11 @@ namespace MpmOtm
   namespace
   {
     /**
+     * Highest degree offered: fixed-size arrays hold p + 1 values.
+     */
+    constexpr unsigned int max_degree = 6;
+
+    /**
      * The p + 1 B-splines of degree p that do not vanish on the knot span
      * [U[i], U[i+1]) of the full knot vector @p U, at @p x (Cox-de Boor
      * recursion in the triangular form of Piegl and Tiller, Alg. A2.2).
@@ -28,7 +33,8 @@ namespace MpmOtm
                 const double               x,
                 double                    *values)
     {
-      std::vector<double> left(p + 1), right(p + 1);
+      AssertIndexRange(p, max_degree + 1);
+      double left[max_degree + 1], right[max_degree + 1];
       values[0] = 1.;
       for (unsigned int j = 1; j <= p; ++j)
         {
@@ -54,7 +60,7 @@ namespace MpmOtm
   {
     prm.declare_entry("B-spline degree",
                       "2",
-                      Patterns::Integer(1, 6),
+                      Patterns::Integer(1, max_degree),
                       "Degree p of the B-splines (Shape functions = "
                       "B-spline): C^(p-1) functions, p + 1 per direction on "
                       "every cell. Method = OTM needs p = 1.");
@@ -87,6 +93,9 @@ namespace MpmOtm
   void
   BSplines<dim>::initialize(const BackgroundGrid<dim> &grid)
   {
+    AssertThrow(p >= 1 && p <= max_degree,
+                ExcMessage("B-spline degree must be between 1 and " +
+                           std::to_string(max_degree) + "."));
     AssertThrow(!grid.is_simplex(),
                 ExcMessage("Shape functions = B-spline need Mesh/Cell type = "
                            "hypercube (tensor-product knot spans)."));
@@ -307,8 +316,7 @@ namespace MpmOtm
   {
     // Bernstein polynomials B_b = binom(p, b) t^b (1-t)^(p-b) and their
     // t-derivatives, then the extraction operator.
-    constexpr unsigned int max_degree = 6;
-    double                 t_power[max_degree + 1], s_power[max_degree + 1];
+    double t_power[max_degree + 1], s_power[max_degree + 1];
     t_power[0] = s_power[0] = 1.;
     for (unsigned int b = 1; b <= p; ++b)
       {
@@ -351,10 +359,9 @@ namespace MpmOtm
     double                                                  *values,
     Tensor<1, dim>                                          *gradients) const
   {
-    constexpr unsigned int max_functions = 7;
-    const auto            &first         = first_function(cell);
-    double                 value_1d[dim][max_functions];
-    double                 derivative_1d[dim][max_functions];
+    const auto &first = first_function(cell);
+    double      value_1d[dim][max_degree + 1];
+    double      derivative_1d[dim][max_degree + 1];
     for (unsigned int d = 0; d < dim; ++d)
       values_1d(d, first[d], xi[d], value_1d[d], derivative_1d[d]);
 
