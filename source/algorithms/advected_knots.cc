@@ -107,29 +107,31 @@ namespace MpmOtm
     vertices.clear();
     knot_of_vertex.clear();
     std::vector<bool> seen(triangulation->n_vertices(), false);
+    // Every rank holds all cells of the box grid and knows every knot, so
+    // it moves all vertices, those of artificial cells included: deal.II's
+    // point search must not see stale positions.
     for (const auto &cell : triangulation->active_cell_iterators())
-      if (!cell->is_artificial())
-        for (const unsigned int v : cell->vertex_indices())
-          if (!seen[cell->vertex_index(v)])
-            {
-              seen[cell->vertex_index(v)] = true;
-              vertices.push_back(&cell->vertex(v));
-              std::array<unsigned int, dim> knot;
-              for (unsigned int d = 0; d < dim; ++d)
-                {
-                  const auto  &knots = splines.breakpoints(d);
-                  const double x     = cell->vertex(v)[d];
-                  // The nearest knot (the vertex sits on one).
-                  const auto above =
-                    std::lower_bound(knots.begin(), knots.end(), x);
-                  unsigned int k = above - knots.begin();
-                  if (k == knots.size() ||
-                      (k > 0 && x - knots[k - 1] < knots[k] - x))
-                    --k;
-                  knot[d] = k;
-                }
-              knot_of_vertex.push_back(knot);
-            }
+      for (const unsigned int v : cell->vertex_indices())
+        if (!seen[cell->vertex_index(v)])
+          {
+            seen[cell->vertex_index(v)] = true;
+            vertices.push_back(&cell->vertex(v));
+            std::array<unsigned int, dim> knot;
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                const auto  &knots = splines.breakpoints(d);
+                const double x     = cell->vertex(v)[d];
+                // The nearest knot (the vertex sits on one).
+                const auto above =
+                  std::lower_bound(knots.begin(), knots.end(), x);
+                unsigned int k = above - knots.begin();
+                if (k == knots.size() ||
+                    (k > 0 && x - knots[k - 1] < knots[k] - x))
+                  --k;
+                knot[d] = k;
+              }
+            knot_of_vertex.push_back(knot);
+          }
   }
 
 
@@ -199,14 +201,13 @@ namespace MpmOtm
                 std::ostringstream message;
                 message << "knot span " << k << " of direction " << d
                         << " (from " << moved[d][k] << " to " << moved[d][k + 1]
-                        << " after the step) would "
-                        << (size <= 0. ? "invert" :
-                                         "be compressed below c dt = ")
-                        << (size <= 0. ? std::string() :
-                                         std::to_string(stable_size) +
-                                           ", for which the time step is "
-                                           "stable (CFL, thesis Eq. 2.48)")
-                        << ". ";
+                        << " after the step) would ";
+                if (size <= 0.)
+                  message << "invert. ";
+                else
+                  message << "be compressed below c dt = " << stable_size
+                          << ", for which the time step is stable (CFL, "
+                             "thesis Eq. 2.48). ";
                 problem = message.str();
               }
           }

@@ -75,7 +75,7 @@ namespace MpmOtm
 
       GroupMassOperator(const std::vector<unsigned int> &group_offsets,
                         const std::vector<unsigned int> &group_indices,
-                        const std::vector<unsigned int> &block_offsets,
+                        const std::vector<std::size_t>  &block_offsets,
                         const std::vector<double>       &group_blocks,
                         const std::vector<unsigned int> &excluded)
         : group_offsets(group_offsets)
@@ -114,7 +114,7 @@ namespace MpmOtm
     private:
       const std::vector<unsigned int> &group_offsets;
       const std::vector<unsigned int> &group_indices;
-      const std::vector<unsigned int> &block_offsets;
+      const std::vector<std::size_t>  &block_offsets;
       const std::vector<double>       &group_blocks;
       const std::vector<unsigned int> &excluded;
     };
@@ -164,18 +164,19 @@ namespace MpmOtm
   ConsistentMassMatrix<dim>::assemble(const NodalSystem<dim>       &system,
                                       const ParticleShapeData<dim> &shape_data)
   {
+    // Consecutive points with the same function indices form a group.
     group_offsets.assign(1, 0);
     group_indices.clear();
-    block_offsets.assign(1, 0);
-    group_blocks.clear();
-    // Consecutive points with the same function indices form a group.
+    group_of_point.resize(shape_data.n_particles());
     std::size_t  point_pass_cost = 0;
+    std::size_t  block_cost      = 0;
     unsigned int group_start     = 0;
     for (unsigned int k = 0; k < shape_data.n_particles(); ++k)
       {
         const unsigned int  begin   = shape_data.offsets[k];
         const unsigned int  n       = shape_data.offsets[k + 1] - begin;
         const unsigned int *indices = &shape_data.indices[begin];
+        Assert(n > 0, ExcMessage("A point without shape functions."));
         point_pass_cost += 2 * n;
         const bool same =
           k > 0 && group_indices.size() - group_start == n &&
@@ -185,19 +186,37 @@ namespace MpmOtm
             group_start = group_indices.size();
             group_indices.insert(group_indices.end(), indices, indices + n);
             group_offsets.push_back(group_indices.size());
-            group_blocks.resize(group_blocks.size() + n * n, 0.);
-            block_offsets.push_back(group_blocks.size());
+            block_cost += std::size_t(n) * n;
           }
-        double       *block = &group_blocks[block_offsets.back() - n * n];
+        group_of_point[k] = group_offsets.size() - 2;
+      }
+
+    // Blocks pay when a product over them is cheaper than a point pass.
+    use_groups = block_cost < point_pass_cost;
+    block_offsets.clear();
+    group_blocks.clear();
+    if (!use_groups)
+      return;
+    block_offsets.resize(group_offsets.size() - 1);
+    std::size_t size = 0;
+    for (unsigned int g = 0; g + 1 < group_offsets.size(); ++g)
+      {
+        block_offsets[g]    = size;
+        const std::size_t n = group_offsets[g + 1] - group_offsets[g];
+        size += n * n;
+      }
+    group_blocks.assign(size, 0.);
+    for (unsigned int k = 0; k < shape_data.n_particles(); ++k)
+      {
+        const unsigned int begin = shape_data.offsets[k];
+        const unsigned int n     = shape_data.offsets[k + 1] - begin;
+        double       *block = &group_blocks[block_offsets[group_of_point[k]]];
         const double  m     = system.particle_mass[k];
         const double *phi   = &shape_data.values[begin];
         for (unsigned int a = 0; a < n; ++a)
           for (unsigned int b = 0; b < n; ++b)
             block[a * n + b] += m * phi[a] * phi[b];
       }
-    use_groups = group_blocks.size() < point_pass_cost;
-    // block_offsets holds the end of each block: make it the start.
-    block_offsets.pop_back();
   }
 
 

@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 namespace MpmOtm
 {
@@ -169,7 +170,10 @@ namespace MpmOtm
     const unsigned int n_ranks         = Utilities::MPI::n_mpi_processes(comm);
     owned.clear();
     owned.set_size(n);
-    owned.add_range(rank * n / n_ranks, (rank + 1) * n / n_ranks);
+    // 64-bit products: n * n_ranks may exceed 32 bits.
+    const auto begin = static_cast<std::uint64_t>(rank) * n / n_ranks;
+    const auto end   = static_cast<std::uint64_t>(rank + 1) * n / n_ranks;
+    owned.add_range(begin, end);
     relevant = owned;
     relevant.add_indices(relevant_indices.begin(), relevant_indices.end());
 
@@ -274,6 +278,9 @@ namespace MpmOtm
   BSplines<dim>::first_function(
     const typename Triangulation<dim>::active_cell_iterator &cell) const
   {
+    Assert(!cell->is_artificial(),
+           ExcMessage("B-splines know the spans of owned and ghost cells "
+                      "only."));
     return span_of_cell[cell->active_cell_index()];
   }
 

@@ -201,7 +201,19 @@ namespace MpmOtm
       grid_motion = std::make_unique<FixedGrid<dim>>();
     else if (auto *splines =
                dynamic_cast<BSplines<dim> *>(shape_functions.get()))
-      grid_motion = std::make_unique<AdvectedKnots<dim>>(*splines);
+      {
+        // Knots move with direction-averaged velocities in 2D and 3D while
+        // OTM moves the points with the full field (Alg. 2 needs points
+        // that keep their place in the moving discretisation).
+        AssertThrow(method == "Unified" || dim == 1,
+                    ExcMessage("Method = OTM with Shape functions = B-spline "
+                               "runs in 1D only: in 2D and 3D the knots move "
+                               "per direction with averaged velocities, which "
+                               "is the unified approach (Method = Unified), "
+                               "not OTM. Use Method = Unified, or linear "
+                               "functions for OTM."));
+        grid_motion = std::make_unique<AdvectedKnots<dim>>(*splines);
+      }
     else
       grid_motion = std::make_unique<AdvectedGrid<dim>>();
     mass_matrix =

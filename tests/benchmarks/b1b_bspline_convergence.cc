@@ -74,13 +74,12 @@ main(int argc, char **argv)
     {
       const double p1 =
         make_simulator<1>(prm, "", "output-p1")->run().displacement_rms_error;
-      const double spline =
-        make_simulator<1>(prm,
-                          "set Shape functions = B-spline\n"
-                          "set B-spline degree = 1\n",
-                          "output-spline-p1")
-          ->run()
-          .displacement_rms_error;
+      const double spline = make_simulator<1>(prm,
+                                              "set Shape functions = B-spline\n"
+                                              "set B-spline degree = 1\n",
+                                              "output-spline-p1")
+                              ->run()
+                              .displacement_rms_error;
       deallog << prm << ": linear B-splines equal P1 "
               << (std::abs(spline - p1) < 1e-9 * p1) << std::endl;
       check(std::abs(spline - p1) < 1e-9 * p1,

@@ -24,12 +24,11 @@ main(int argc, char **argv)
                                 "set B-spline degree = 2\n"
                                 "set Mass matrix = consistent\n";
   const auto        error     = [](const std::string &prm,
-                          const std::string &changes,
-                          const std::string &directory) {
+                        const std::string &changes,
+                        const std::string &directory) {
     return make_simulator<1>(prm,
-                             changes +
-                               "subsection Output\n"
-                               " set Write particle CSV = false\nend\n",
+                             changes + "subsection Output\n"
+                                                  " set Write particle CSV = false\nend\n",
                              directory)
       ->run()
       .displacement_rms_error;
@@ -44,16 +43,17 @@ main(int argc, char **argv)
       const std::string material_grid =
         "subsection Mesh\n set Subdivisions = " + std::to_string(nodes - 1) +
         "\nend\n";
-      const std::string tag = std::to_string(nodes);
-      const double      mpm =
-        error("B2-traction-bar-convergence.prm", fixed_grid, "output-mpm" + tag);
-      const double bsmpm = error("B2-traction-bar-convergence.prm",
+      const std::string tag     = std::to_string(nodes);
+      const double      mpm     = error("B2-traction-bar-convergence.prm",
+                               fixed_grid,
+                               "output-mpm" + tag);
+      const double      bsmpm   = error("B2-traction-bar-convergence.prm",
                                  fixed_grid + splines,
                                  "output-bsmpm" + tag);
-      const double otm   = error("B2-traction-bar-otm.prm",
+      const double      otm     = error("B2-traction-bar-otm.prm",
                                short_run + material_grid,
                                "output-otm" + tag);
-      const double unified = error("B2-traction-bar-unified.prm",
+      const double      unified = error("B2-traction-bar-unified.prm",
                                    short_run + material_grid,
                                    "output-unified" + tag);
       unified_errors.push_back(unified);

@@ -47,8 +47,10 @@ namespace MpmOtm
     std::vector<unsigned int> group_offsets;
     /// Local indices of the functions of each group.
     std::vector<unsigned int> group_indices;
-    /// Start of each group's dense block in group_blocks.
-    std::vector<unsigned int> block_offsets;
+    /// The group of each point.
+    std::vector<unsigned int> group_of_point;
+    /// Start of each group's dense block in group_blocks (only if used).
+    std::vector<std::size_t> block_offsets;
     /// Row-major blocks sum_p m_p phi_a phi_b of the groups.
     std::vector<double> group_blocks;
   };

@@ -67,7 +67,8 @@ namespace MpmOtm
     locally_owned_functions() const = 0;
 
     /**
-     * The functions that do not vanish on some locally owned cell.
+     * The locally owned functions and those that do not vanish on some
+     * locally owned cell.
      */
     virtual IndexSet
     locally_relevant_functions() const = 0;
