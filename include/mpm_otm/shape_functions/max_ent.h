@@ -1,0 +1,142 @@
+#ifndef mpm_otm_shape_functions_max_ent_h
+#define mpm_otm_shape_functions_max_ent_h
+
+#include <deal.II/fe/fe.h>
+
+#include <mpm_otm/shape_functions/shape_functions.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace MpmOtm
+{
+  /**
+   * Local maximum-entropy shape functions (Arroyo and Ortiz; journal
+   * Sect. 6.3, Eqs. 77-89) on the node cloud of the grid's vertices: fixed
+   * nodes for MPM, nodes that move with the material for OTM. At a point x
+   * the functions are phi_i = w_i exp(lambda . (x - x_i)) / Z with the
+   * cubic-spline prior w_i of Eq. 89 on the support radius
+   * d_i = d_max zeta_i (Eq. 88, zeta_i the distance from node i to its
+   * nearest other node), and lambda minimises ln Z (Eq. 83), found by
+   * Newton's method with a backtracking line search. The gradients follow
+   * from differentiating the constraint sum_i phi_i (x - x_i) = 0:
+   * grad phi_i = phi_i (grad w_i / w_i - sum_j phi_j grad w_j / w_j
+   *                     - (I + A^T) H^-1 (x - x_i)),
+   * H = sum_j phi_j (x - x_j) (x - x_j)^T, A = sum_j phi_j (x - x_j)
+   * (grad w_j / w_j)^T (journal Eqs. 84-86; Eq. 84 as printed has the
+   * opposite sign). The nodes whose support contains x are found with an
+   * R-tree of the supports' bounding boxes, so the cost per point does not
+   * grow with the number of nodes.
+   *
+   * The functions reach beyond one cell's vertices, so they are not the
+   * degrees of freedom of a FiniteElement; they are numbered like the
+   * vertices of FE_Q(1) / FE_SimplexP(1), whose DoFHandler the grid output
+   * uses (the field is written by its values at the vertices).
+   */
+  template <int dim>
+  class MaxEnt : public ShapeFunctions<dim>
+  {
+  public:
+    using typename ShapeFunctions<dim>::VectorType;
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    /**
+     * Support factor @p support_factor (d_max); the parameter file's
+     * "Max-ent support factor" replaces it in parse_parameters().
+     */
+    explicit MaxEnt(const double support_factor = 2.);
+
+    ~MaxEnt() override;
+
+    void
+    parse_parameters(ParameterHandler &prm) override;
+
+    void
+    initialize(const BackgroundGrid<dim> &grid) override;
+
+    types::global_dof_index
+    n_functions() const override;
+
+    IndexSet
+    locally_owned_functions() const override;
+
+    IndexSet
+    locally_relevant_functions() const override;
+
+    /**
+     * Rebuild the node cloud from the current vertices (they move in OTM),
+     * then evaluate at every point.
+     */
+    void
+    evaluate(const MaterialPoints<dim>         &material_points,
+             const Utilities::MPI::Partitioner &partitioner,
+             ParticleShapeData<dim>            &data) const override;
+
+    IndexSet
+    boundary_functions(const types::boundary_id boundary_id) const override;
+
+    bool
+    is_linearly_complete() const override;
+
+    types::global_dof_index
+    vertex_function(
+      const typename Triangulation<dim>::active_cell_iterator &cell,
+      const unsigned int v) const override;
+
+    const DoFHandler<dim> &
+    dof_handler() const override;
+
+    /**
+     * The field's values at the vertices.
+     */
+    void
+    to_cell_dofs(const VectorType &coefficients,
+                 VectorType       &values) const override;
+
+    /**
+     * Collect the node positions and support radii from the current
+     * vertices and build the search tree.
+     */
+    void
+    update_nodes() const;
+
+    /**
+     * The functions that do not vanish at @p x, their values and gradients
+     * (global indices). Returns an empty string, or a message naming @p x
+     * and what to change if fewer than dim + 1 nodes reach x or Newton's
+     * method does not converge (x outside the convex hull of the nodes).
+     */
+    std::string
+    evaluate_at(const Point<dim>                     &x,
+                std::vector<types::global_dof_index> &indices,
+                std::vector<double>                  &values,
+                std::vector<Tensor<1, dim>>          &gradients) const;
+
+  private:
+    double support_factor;
+
+    const Triangulation<dim>           *triangulation = nullptr;
+    std::unique_ptr<FiniteElement<dim>> fe;
+    DoFHandler<dim>                     dofs;
+
+    /// Current node positions and support radii, by function index.
+    mutable std::vector<Point<dim>> nodes;
+    mutable std::vector<double>     radii;
+    /// Bounding boxes of the supports and their R-tree.
+    mutable std::vector<BoundingBox<dim>> supports;
+    struct SearchTree;
+    mutable std::unique_ptr<SearchTree> search_tree;
+    /// Work arrays of one point, kept to avoid allocation per point.
+    mutable std::vector<unsigned int>            candidates;
+    mutable std::vector<double>                  weights;
+    mutable std::vector<Tensor<1, dim>>          weight_gradients;
+    mutable std::vector<types::global_dof_index> point_indices;
+    mutable std::vector<double>                  point_values;
+    mutable std::vector<Tensor<1, dim>>          point_gradients;
+  };
+} // namespace MpmOtm
+
+#endif
