@@ -229,9 +229,23 @@ namespace MpmOtm
       return r;
     };
 
+    // Start from the multipliers of the previous point (points come cell by
+    // cell, so it is usually a neighbour) unless lambda = 0 is closer.
     Tensor<1, dim> lambda;
     double         objective = ln_z(lambda);
     Tensor<1, dim> residual  = residual_of();
+    {
+      const double         previous_objective = ln_z(previous_lambda);
+      const Tensor<1, dim> previous_residual  = residual_of();
+      if (previous_residual.norm() < residual.norm())
+        {
+          lambda    = previous_lambda;
+          objective = previous_objective;
+          residual  = previous_residual;
+        }
+      else
+        objective = ln_z(lambda);
+    }
     Tensor<2, dim> hessian;
     const double   tolerance = 1e-12 * length_scale;
     bool           converged = false;
@@ -290,6 +304,8 @@ namespace MpmOtm
                 << support_factor << ").";
         return message.str();
       }
+
+    previous_lambda = lambda;
 
     // Gradients (Eqs. 84-86 with the sign derived in the class
     // documentation).

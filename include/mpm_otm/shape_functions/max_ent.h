@@ -130,9 +130,11 @@ namespace MpmOtm
     struct SearchTree;
     mutable std::unique_ptr<SearchTree> search_tree;
     /// Work arrays of one point, kept to avoid allocation per point.
-    mutable std::vector<unsigned int>            candidates;
-    mutable std::vector<double>                  weights;
-    mutable std::vector<Tensor<1, dim>>          weight_gradients;
+    mutable std::vector<unsigned int>   candidates;
+    mutable std::vector<double>         weights;
+    mutable std::vector<Tensor<1, dim>> weight_gradients;
+    /// Multipliers of the last point evaluated: the next one's first guess.
+    mutable Tensor<1, dim>                       previous_lambda;
     mutable std::vector<types::global_dof_index> point_indices;
     mutable std::vector<double>                  point_values;
     mutable std::vector<Tensor<1, dim>>          point_gradients;
