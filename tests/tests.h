@@ -97,6 +97,36 @@ namespace MpmOtmTests
     simulator->setup(prm);
     return simulator;
   }
+
+  /**
+   * A simulator on the unit box [0, 1]^dim with @p cells_per_direction
+   * cells per direction (custom problem, at rest), whose grid the tests of
+   * the shape-function families use.
+   */
+  template <int dim>
+  std::unique_ptr<MpmOtm::Simulator<dim>>
+  make_unit_box_simulator(const unsigned int cells_per_direction,
+                          const std::string &directory)
+  {
+    std::string lower = "0", upper = "1",
+                blocks = std::to_string(cells_per_direction);
+    for (unsigned int d = 1; d < dim; ++d)
+      {
+        lower += ",0";
+        upper += ",1";
+        blocks += "," + std::to_string(cells_per_direction);
+      }
+    return make_simulator<dim>("",
+                               "set Dimension = " + std::to_string(dim) +
+                                 "\nset Problem = custom\n"
+                                 "subsection Mesh\n set Lower corner = " +
+                                 lower + "\n set Upper corner = " + upper +
+                                 "\n set Subdivisions = " + blocks +
+                                 "\nend\n"
+                                 "subsection Time\n set Time step = 1e-6\n"
+                                 "end\n",
+                               directory);
+  }
 } // namespace MpmOtmTests
 
 #endif

@@ -14,6 +14,8 @@ plot "data/B1b-mpm-p1.dat" using 1:2 with linespoints lw 2 pt 7 title "mpm-otm, 
      "data/B1b-otm-p1.dat" using 1:2 with linespoints lw 2 pt 5 title "mpm-otm, OTM-P1 (consistent)", \
      "data/B1b-bsmpm-p2.dat" using 1:2 with linespoints lw 2 pt 9 title "mpm-otm, BSMPM p = 2 (consistent)", \
      "data/B1b-unified-p2.dat" using 1:2 with linespoints lw 2 pt 4 dt 2 title "mpm-otm, unified p = 2 (consistent)", \
+     "data/B1b-mpm-maxent.dat" using 1:2 with linespoints lw 2 pt 11 title "mpm-otm, MPM-maxent d_{max} = 2 (consistent)", \
+     "data/B1b-otm-maxent.dat" using 1:2 with linespoints lw 2 pt 13 dt 3 title "mpm-otm, OTM-maxent d_{max} = 2 (consistent)", \
      [8:512] 1.6e-4/x**2 with lines dt 2 lc rgb "gray" title "second order", \
      [8:64] 1.2e-4/x**3 with lines dt 3 lc rgb "black" title "third order"
 set key top right

@@ -42,9 +42,10 @@ track() {
   done | sort -g
 }
 
-echo "B1b: RMS displacement error at T = 1e-3 (P1 and quadratic B-splines)"
+echo "B1b: RMS displacement error at T = 1e-3 (P1, quadratic B-splines, max-ent)"
 for entry in mpm-p1:B1b-bar-fixed-ends.prm otm-p1:B1b-bar-fixed-ends-otm.prm \
-             bsmpm-p2:B1b-bar-fixed-ends-bsmpm.prm unified-p2:B1b-bar-fixed-ends-unified.prm; do
+             bsmpm-p2:B1b-bar-fixed-ends-bsmpm.prm unified-p2:B1b-bar-fixed-ends-unified.prm \
+             mpm-maxent:B1b-bar-fixed-ends-mpm-maxent.prm otm-maxent:B1b-bar-fixed-ends-otm-maxent.prm; do
   name=${entry%%:*}
   prm=${entry#*:}
   {

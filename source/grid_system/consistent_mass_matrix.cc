@@ -12,6 +12,31 @@ namespace MpmOtm
   namespace
   {
     /**
+     * y = M x for a matrix whose product on the locally stored entries
+     * (ghosts included) is @p local_product(x, y), summed over the ranks,
+     * with the identity on the excluded coefficients. The excluded
+     * coefficients of x are zero (right-hand side and initial guess are),
+     * so they do not couple to the others.
+     */
+    template <typename VectorType, typename LocalProduct>
+    void
+    multiply_with_exclusions(VectorType                      &dst,
+                             const VectorType                &src,
+                             const std::vector<unsigned int> &excluded,
+                             const LocalProduct              &local_product)
+    {
+      src.update_ghost_values();
+      dst = 0.;
+      local_product(src.get_values(), dst.get_values());
+      dst.compress(VectorOperation::add);
+      src.zero_out_ghost_values();
+      for (const unsigned int i : excluded)
+        dst.local_element(i) = src.local_element(i);
+    }
+
+
+
+    /**
      * y = M x with M_ij = sum_p m_p phi_i(x_p) phi_j(x_p), and the identity
      * on the excluded coefficients.
      */
@@ -32,29 +57,27 @@ namespace MpmOtm
       void
       vmult(VectorType &dst, const VectorType &src) const
       {
-        // The excluded coefficients of src are zero (right-hand side and
-        // initial guess are), so they do not couple to the others.
-        src.update_ghost_values();
-        dst             = 0.;
-        const double *x = src.get_values();
-        double       *y = dst.get_values();
-        for (unsigned int k = 0; k < particle_mass.size(); ++k)
-          {
-            double interpolated = 0.;
-            for (unsigned int e = shape_data.offsets[k];
-                 e < shape_data.offsets[k + 1];
-                 ++e)
-              interpolated += shape_data.values[e] * x[shape_data.indices[e]];
-            interpolated *= particle_mass[k];
-            for (unsigned int e = shape_data.offsets[k];
-                 e < shape_data.offsets[k + 1];
-                 ++e)
-              y[shape_data.indices[e]] += shape_data.values[e] * interpolated;
-          }
-        dst.compress(VectorOperation::add);
-        src.zero_out_ghost_values();
-        for (const unsigned int i : excluded)
-          dst.local_element(i) = src.local_element(i);
+        multiply_with_exclusions(
+          dst,
+          src,
+          excluded,
+          [&](const double *x, double *y) {
+            for (unsigned int k = 0; k < particle_mass.size(); ++k)
+              {
+                double interpolated = 0.;
+                for (unsigned int e = shape_data.offsets[k];
+                     e < shape_data.offsets[k + 1];
+                     ++e)
+                  interpolated +=
+                    shape_data.values[e] * x[shape_data.indices[e]];
+                interpolated *= particle_mass[k];
+                for (unsigned int e = shape_data.offsets[k];
+                     e < shape_data.offsets[k + 1];
+                     ++e)
+                  y[shape_data.indices[e]] +=
+                    shape_data.values[e] * interpolated;
+              }
+          });
       }
 
     private:
@@ -88,27 +111,25 @@ namespace MpmOtm
       void
       vmult(VectorType &dst, const VectorType &src) const
       {
-        src.update_ghost_values();
-        dst             = 0.;
-        const double *x = src.get_values();
-        double       *y = dst.get_values();
-        for (unsigned int g = 0; g + 1 < group_offsets.size(); ++g)
-          {
-            const unsigned int *indices = &group_indices[group_offsets[g]];
-            const unsigned int  n     = group_offsets[g + 1] - group_offsets[g];
-            const double       *block = &group_blocks[block_offsets[g]];
-            for (unsigned int a = 0; a < n; ++a)
+        multiply_with_exclusions(
+          dst,
+          src,
+          excluded,
+          [&](const double *x, double *y) {
+            for (unsigned int g = 0; g + 1 < group_offsets.size(); ++g)
               {
-                double sum = 0.;
-                for (unsigned int b = 0; b < n; ++b)
-                  sum += block[a * n + b] * x[indices[b]];
-                y[indices[a]] += sum;
+                const unsigned int *indices = &group_indices[group_offsets[g]];
+                const unsigned int  n = group_offsets[g + 1] - group_offsets[g];
+                const double       *block = &group_blocks[block_offsets[g]];
+                for (unsigned int a = 0; a < n; ++a)
+                  {
+                    double sum = 0.;
+                    for (unsigned int b = 0; b < n; ++b)
+                      sum += block[a * n + b] * x[indices[b]];
+                    y[indices[a]] += sum;
+                  }
               }
-          }
-        dst.compress(VectorOperation::add);
-        src.zero_out_ghost_values();
-        for (const unsigned int i : excluded)
-          dst.local_element(i) = src.local_element(i);
+          });
       }
 
     private:

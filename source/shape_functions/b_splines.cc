@@ -590,21 +590,18 @@ namespace MpmOtm
   template class BSplines<3>;
 } // namespace MpmOtm
 
+#define MPM_OTM_B_SPLINE_DESCRIPTION                                   \
+  "tensor-product B-splines of degree 'B-spline degree' on open knot " \
+  "vectors, by Bezier extraction onto FE_Bernstein cells"
 MPM_OTM_REGISTER_PLUGIN(MpmOtm::ShapeFunctions<1>,
                         MpmOtm::BSplines<1>,
                         "B-spline",
-                        "tensor-product B-splines of degree 'B-spline degree' "
-                        "on open knot vectors, by Bezier extraction onto "
-                        "FE_Bernstein cells")
+                        MPM_OTM_B_SPLINE_DESCRIPTION)
 MPM_OTM_REGISTER_PLUGIN(MpmOtm::ShapeFunctions<2>,
                         MpmOtm::BSplines<2>,
                         "B-spline",
-                        "tensor-product B-splines of degree 'B-spline degree' "
-                        "on open knot vectors, by Bezier extraction onto "
-                        "FE_Bernstein cells")
+                        MPM_OTM_B_SPLINE_DESCRIPTION)
 MPM_OTM_REGISTER_PLUGIN(MpmOtm::ShapeFunctions<3>,
                         MpmOtm::BSplines<3>,
                         "B-spline",
-                        "tensor-product B-splines of degree 'B-spline degree' "
-                        "on open knot vectors, by Bezier extraction onto "
-                        "FE_Bernstein cells")
+                        MPM_OTM_B_SPLINE_DESCRIPTION)

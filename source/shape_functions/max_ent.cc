@@ -1,9 +1,6 @@
 #include <deal.II/base/bounding_box.h>
 #include <deal.II/boost_adaptors/bounding_box.h>
 #include <deal.II/boost_adaptors/point.h>
-#include <deal.II/dofs/dof_tools.h>
-#include <deal.II/fe/fe_q.h>
-#include <deal.II/fe/fe_simplex_p.h>
 #include <deal.II/numerics/rtree.h>
 #include <deal.II/particles/particle_handler.h>
 
@@ -100,18 +97,12 @@ namespace MpmOtm
   void
   MaxEnt<dim>::initialize(const BackgroundGrid<dim> &grid)
   {
-    triangulation = &grid.triangulation();
     AssertThrow(Utilities::MPI::n_mpi_processes(
-                  triangulation->get_communicator()) == 1,
+                  grid.triangulation().get_communicator()) == 1,
                 ExcMessage("Shape functions = max-ent run on one MPI rank "
                            "only so far: their supports reach beyond the "
                            "ghost cells. Run without mpirun."));
-    if (grid.is_simplex())
-      fe = std::make_unique<FE_SimplexP<dim>>(1);
-    else
-      fe = std::make_unique<FE_Q<dim>>(1);
-    dofs.reinit(*triangulation);
-    dofs.distribute_dofs(*fe);
+    vertex_numbering.initialize(grid);
     nodes.clear();
     update_nodes();
   }
@@ -122,6 +113,7 @@ namespace MpmOtm
   void
   MaxEnt<dim>::update_nodes() const
   {
+    const DoFHandler<dim>  &dofs = vertex_numbering.dof_handler();
     std::vector<Point<dim>> current(dofs.n_dofs());
     for (const auto &cell : dofs.active_cell_iterators())
       for (const unsigned int v : cell->vertex_indices())
@@ -372,7 +364,7 @@ namespace MpmOtm
   types::global_dof_index
   MaxEnt<dim>::n_functions() const
   {
-    return dofs.n_dofs();
+    return vertex_numbering.n_functions();
   }
 
 
@@ -381,7 +373,7 @@ namespace MpmOtm
   IndexSet
   MaxEnt<dim>::locally_owned_functions() const
   {
-    return dofs.locally_owned_dofs();
+    return vertex_numbering.locally_owned_functions();
   }
 
 
@@ -390,7 +382,8 @@ namespace MpmOtm
   IndexSet
   MaxEnt<dim>::locally_relevant_functions() const
   {
-    return complete_index_set(dofs.n_dofs());
+    // Serial only: every function is relevant.
+    return complete_index_set(n_functions());
   }
 
 
@@ -399,10 +392,7 @@ namespace MpmOtm
   IndexSet
   MaxEnt<dim>::boundary_functions(const types::boundary_id boundary_id) const
   {
-    return DoFTools::extract_boundary_dofs(dofs,
-                                           ComponentMask(),
-                                           std::set<types::boundary_id>{
-                                             boundary_id});
+    return vertex_numbering.boundary_functions(boundary_id);
   }
 
 
@@ -422,12 +412,7 @@ namespace MpmOtm
     const typename Triangulation<dim>::active_cell_iterator &cell,
     const unsigned int                                       v) const
   {
-    return
-      typename DoFHandler<dim>::active_cell_iterator(&cell->get_triangulation(),
-                                                     cell->level(),
-                                                     cell->index(),
-                                                     &dofs)
-        ->vertex_dof_index(v, 0);
+    return vertex_numbering.vertex_function(cell, v);
   }
 
 
@@ -436,7 +421,7 @@ namespace MpmOtm
   const DoFHandler<dim> &
   MaxEnt<dim>::dof_handler() const
   {
-    return dofs;
+    return vertex_numbering.dof_handler();
   }
 
 

@@ -30,30 +30,6 @@ using namespace MpmOtmTests;
 
 namespace
 {
-  template <int dim>
-  std::unique_ptr<Simulator<dim>>
-  grid_of(const unsigned int cells_per_direction)
-  {
-    std::string lower = "0", upper = "1",
-                blocks = std::to_string(cells_per_direction);
-    for (unsigned int d = 1; d < dim; ++d)
-      {
-        lower += ",0";
-        upper += ",1";
-        blocks += "," + std::to_string(cells_per_direction);
-      }
-    return make_simulator<dim>("",
-                               "set Dimension = " + std::to_string(dim) +
-                                 "\nset Problem = custom\n"
-                                 "subsection Mesh\n set Lower corner = " +
-                                 lower + "\n set Upper corner = " + upper +
-                                 "\n set Subdivisions = " + blocks +
-                                 "\nend\n"
-                                 "subsection Time\n set Time step = 1e-6\n"
-                                 "end\n",
-                               "output-b-spline-grid");
-  }
-
   /**
    * Knots 0 < ... < 1 with cell sizes varying by a factor of about 3.
    */
@@ -88,9 +64,10 @@ namespace
   void
   check_point_properties(const unsigned int p)
   {
-    const unsigned int n_cells   = 5;
-    auto               simulator = grid_of<dim>(n_cells);
-    BSplines<dim>      splines(p);
+    const unsigned int n_cells = 5;
+    auto               simulator =
+      make_unit_box_simulator<dim>(n_cells, "output-b-spline-grid");
+    BSplines<dim> splines(p);
     splines.initialize(simulator->background_grid());
     std::array<std::vector<double>, dim> knots;
     for (unsigned int d = 0; d < dim; ++d)
@@ -175,9 +152,10 @@ namespace
   void
   check_continuity(const unsigned int p)
   {
-    const unsigned int n_cells   = 6;
-    auto               simulator = grid_of<1>(n_cells);
-    BSplines<1>        splines(p);
+    const unsigned int n_cells = 6;
+    auto               simulator =
+      make_unit_box_simulator<1>(n_cells, "output-b-spline-grid");
+    BSplines<1> splines(p);
     splines.initialize(simulator->background_grid());
     splines.move_breakpoints({{non_uniform_knots(n_cells)}});
     const auto &knots = splines.breakpoints(0);
@@ -262,8 +240,9 @@ namespace
   double
   projection_error(const unsigned int p, const unsigned int n_cells)
   {
-    auto          simulator = grid_of<dim>(n_cells);
-    const auto   &tria      = simulator->background_grid().triangulation();
+    auto simulator =
+      make_unit_box_simulator<dim>(n_cells, "output-b-spline-grid");
+    const auto   &tria = simulator->background_grid().triangulation();
     BSplines<dim> splines(p);
     splines.initialize(simulator->background_grid());
     const auto f = [](const Point<dim> &x) {

@@ -26,34 +26,11 @@ using namespace MpmOtmTests;
 namespace
 {
   template <int dim>
-  std::unique_ptr<Simulator<dim>>
-  grid_of(const unsigned int cells_per_direction)
-  {
-    std::string lower = "0", upper = "1",
-                blocks = std::to_string(cells_per_direction);
-    for (unsigned int d = 1; d < dim; ++d)
-      {
-        lower += ",0";
-        upper += ",1";
-        blocks += "," + std::to_string(cells_per_direction);
-      }
-    return make_simulator<dim>("",
-                               "set Dimension = " + std::to_string(dim) +
-                                 "\nset Problem = custom\n"
-                                 "subsection Mesh\n set Lower corner = " +
-                                 lower + "\n set Upper corner = " + upper +
-                                 "\n set Subdivisions = " + blocks +
-                                 "\nend\n"
-                                 "subsection Time\n set Time step = 1e-6\n"
-                                 "end\n",
-                               "output-max-ent-grid");
-  }
-
-  template <int dim>
   void
   check_properties(const unsigned int n_cells, const double support_factor)
   {
-    auto        simulator = grid_of<dim>(n_cells);
+    auto simulator =
+      make_unit_box_simulator<dim>(n_cells, "output-max-ent-grid");
     MaxEnt<dim> functions(support_factor);
     functions.initialize(simulator->background_grid());
 
@@ -151,7 +128,7 @@ namespace
   void
   check_errors()
   {
-    auto      simulator = grid_of<1>(4);
+    auto      simulator = make_unit_box_simulator<1>(4, "output-max-ent-grid");
     MaxEnt<1> narrow(1.);
     narrow.initialize(simulator->background_grid());
     std::vector<types::global_dof_index> indices;

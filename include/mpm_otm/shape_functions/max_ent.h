@@ -1,8 +1,7 @@
 #ifndef mpm_otm_shape_functions_max_ent_h
 #define mpm_otm_shape_functions_max_ent_h
 
-#include <deal.II/fe/fe.h>
-
+#include <mpm_otm/shape_functions/linear_lagrange.h>
 #include <mpm_otm/shape_functions/shape_functions.h>
 
 #include <memory>
@@ -31,8 +30,9 @@ namespace MpmOtm
    *
    * The functions reach beyond one cell's vertices, so they are not the
    * degrees of freedom of a FiniteElement; they are numbered like the
-   * vertices of FE_Q(1) / FE_SimplexP(1), whose DoFHandler the grid output
-   * uses (the field is written by its values at the vertices).
+   * linear functions, one per vertex, and the numbering, the boundary sets
+   * and the output element are those of a LinearLagrange object (the field
+   * is written by its values at the vertices).
    */
   template <int dim>
   class MaxEnt : public ShapeFunctions<dim>
@@ -118,9 +118,9 @@ namespace MpmOtm
   private:
     double support_factor;
 
-    const Triangulation<dim>           *triangulation = nullptr;
-    std::unique_ptr<FiniteElement<dim>> fe;
-    DoFHandler<dim>                     dofs;
+    /// The numbering of the nodes (one function per vertex, as for linear
+    /// functions), their boundary sets and the output element.
+    LinearLagrange<dim> vertex_numbering;
 
     /// Current node positions and support radii, by function index.
     mutable std::vector<Point<dim>> nodes;
