@@ -9,6 +9,7 @@
 #include <mpm_otm/material_points/material_points.h>
 #include <mpm_otm/shape_functions/max_ent.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -149,6 +150,195 @@ namespace MpmOtm
         supports[i] = BoundingBox<dim>(std::make_pair(lower, upper));
       }
     search_tree = std::make_unique<SearchTree>(supports);
+
+    // Each cell's candidates: the nodes whose support ball meets the cell's
+    // bounding box.
+    const Triangulation<dim> &triangulation = dofs.get_triangulation();
+    cell_boxes.resize(triangulation.n_active_cells());
+    cell_node_offsets.assign(triangulation.n_active_cells() + 1, 0);
+    cell_nodes.clear();
+    for (const auto &cell : triangulation.active_cell_iterators())
+      {
+        const unsigned int c       = cell->active_cell_index();
+        cell_node_offsets[c]       = cell_nodes.size();
+        const BoundingBox<dim> box = cell->bounding_box();
+        cell_boxes[c]              = box;
+        candidates.clear();
+        search_tree->tree.query(bgi::intersects(box),
+                                std::back_inserter(candidates));
+        for (const unsigned int i : candidates)
+          {
+            double squared_distance = 0;
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                const double outside =
+                  std::max({box.lower_bound(d) - nodes[i][d],
+                            nodes[i][d] - box.upper_bound(d),
+                            0.});
+                squared_distance += outside * outside;
+              }
+            // Nodes whose support only touches the box (to round-off, as
+            // on a uniform grid with integer d_max) have zero weight in it.
+            if (squared_distance < (1. - 1e-10) * radii[i] * radii[i])
+              cell_nodes.push_back(i);
+          }
+      }
+    cell_node_offsets.back() = cell_nodes.size();
+  }
+
+
+
+  template <int dim>
+  std::string
+  MaxEnt<dim>::solve(const Point<dim>         &x,
+                     const unsigned int *const candidate_nodes,
+                     const unsigned int        n_candidates,
+                     Tensor<1, dim>           &lambda,
+                     double *const             values,
+                     Tensor<1, dim> *const     gradients) const
+  {
+    // The candidates whose support contains x: their offsets x - x_i, priors
+    // and logarithmic prior gradients grad w_i / w_i.
+    reached.clear();
+    offsets.clear();
+    weights.clear();
+    log_weight_gradients.clear();
+    double length_scale = 0;
+    for (unsigned int k = 0; k < n_candidates; ++k)
+      {
+        values[k]                     = 0.;
+        gradients[k]                  = Tensor<1, dim>();
+        const unsigned int   i        = candidate_nodes[k];
+        const Tensor<1, dim> offset   = x - nodes[i];
+        const double         distance = offset.norm();
+        const double         r        = distance / radii[i];
+        if (r >= 1.)
+          continue;
+        double w, dw_dr;
+        cubic_spline(r, w, dw_dr);
+        reached.push_back(k);
+        offsets.push_back(offset);
+        weights.push_back(w);
+        log_weight_gradients.push_back(
+          distance > 0. ? (dw_dr / (w * radii[i] * distance)) * offset :
+                          Tensor<1, dim>());
+        length_scale = std::max(length_scale, radii[i]);
+      }
+    const unsigned int n = reached.size();
+    if (n < dim + 1)
+      {
+        std::ostringstream message;
+        message << "only " << n << " node(s) have x = (" << x
+                << ") inside their support, fewer than dim + 1 = " << dim + 1
+                << ": increase Max-ent support factor (now " << support_factor
+                << ").";
+        return message.str();
+      }
+
+    // One pass at multipliers l: phi_k = w_k exp(l . (x - x_k)) / Z (shifted
+    // by the largest exponent against overflow), ln Z, the residual
+    // r = sum_k phi_k (x - x_k) = grad ln Z and the Hessian
+    // H = sum_k phi_k (x - x_k) (x - x_k)^T - r r^T.
+    struct State
+    {
+      double         ln_z;
+      Tensor<1, dim> residual;
+      Tensor<2, dim> hessian;
+    };
+    const auto pass = [&](const Tensor<1, dim> &l, std::vector<double> &phi) {
+      phi.resize(n);
+      double largest = -std::numeric_limits<double>::max();
+      for (unsigned int k = 0; k < n; ++k)
+        largest = std::max(largest, l * offsets[k]);
+      double z = 0;
+      for (unsigned int k = 0; k < n; ++k)
+        {
+          phi[k] = weights[k] * std::exp(l * offsets[k] - largest);
+          z += phi[k];
+        }
+      State        state{std::log(z) + largest, {}, {}};
+      const double inverse_z = 1. / z;
+      for (unsigned int k = 0; k < n; ++k)
+        {
+          phi[k] *= inverse_z;
+          const Tensor<1, dim> weighted = phi[k] * offsets[k];
+          state.residual += weighted;
+          state.hessian += outer_product(weighted, offsets[k]);
+        }
+      state.hessian -= outer_product(state.residual, state.residual);
+      return state;
+    };
+
+    // Newton's method on ln Z (Eq. 83, convex) with a backtracking line
+    // search: accept a step that decreases ln Z (Armijo) or, once ln Z is
+    // flat to round-off, the residual; otherwise halve it.
+    const double tolerance = 1e-12 * length_scale;
+    State        state     = pass(lambda, phi_current);
+    bool         converged = false;
+    for (unsigned int iteration = 0; iteration < 100; ++iteration)
+      {
+        const double residual_norm = state.residual.norm();
+        if (residual_norm <= tolerance)
+          {
+            converged = true;
+            break;
+          }
+        if (!(determinant(state.hessian) > 0.))
+          break;
+        const Tensor<1, dim> step  = -(invert(state.hessian) * state.residual);
+        const double         slope = state.residual * step;
+        double               alpha = 1.;
+        bool                 accepted = false;
+        for (unsigned int halving = 0; halving < 40; ++halving, alpha *= 0.5)
+          {
+            const State trial = pass(lambda + alpha * step, phi_trial);
+            if (trial.ln_z <= state.ln_z + 1e-4 * alpha * slope ||
+                trial.residual.norm() < residual_norm)
+              {
+                lambda += alpha * step;
+                state = trial;
+                std::swap(phi_current, phi_trial);
+                accepted = true;
+                break;
+              }
+          }
+        if (!accepted)
+          break;
+      }
+    if (!converged)
+      {
+        std::ostringstream message;
+        message << "the max-ent Lagrange multipliers at x = (" << x
+                << ") did not converge (residual " << state.residual.norm()
+                << "): x lies outside the convex hull of the " << n
+                << " nodes that reach it, or on its boundary. Keep the "
+                   "material inside the grid's nodes, or increase Max-ent "
+                   "support factor (now "
+                << support_factor << ").";
+        lambda = Tensor<1, dim>();
+        return message.str();
+      }
+
+    // Gradients (Eqs. 84-86 with the sign derived in the class
+    // documentation).
+    Tensor<1, dim> mean_log_gradient;
+    Tensor<2, dim> A;
+    for (unsigned int k = 0; k < n; ++k)
+      {
+        mean_log_gradient += phi_current[k] * log_weight_gradients[k];
+        A +=
+          outer_product(phi_current[k] * offsets[k], log_weight_gradients[k]);
+      }
+    const Tensor<2, dim> M =
+      (unit_symmetric_tensor<dim>() + transpose(A)) * invert(state.hessian);
+    for (unsigned int k = 0; k < n; ++k)
+      {
+        values[reached[k]] = phi_current[k];
+        gradients[reached[k]] =
+          phi_current[k] *
+          (log_weight_gradients[k] - mean_log_gradient - M * offsets[k]);
+      }
+    return "";
   }
 
 
@@ -160,163 +350,31 @@ namespace MpmOtm
                            std::vector<double>                  &values,
                            std::vector<Tensor<1, dim>> &gradients) const
   {
-    // The nodes whose support contains x, their priors and prior gradients.
     candidates.clear();
     search_tree->tree.query(bgi::intersects(x), std::back_inserter(candidates));
+    values.resize(candidates.size());
+    gradients.resize(candidates.size());
+    const std::string failure = solve(x,
+                                      candidates.data(),
+                                      candidates.size(),
+                                      previous_lambda,
+                                      values.data(),
+                                      gradients.data());
+    // Keep the functions that do not vanish at x (on failure: those whose
+    // support contains x, with value zero).
     indices.clear();
-    weights.clear();
-    weight_gradients.clear();
-    double length_scale = 0;
-    for (const unsigned int i : candidates)
-      {
-        const Tensor<1, dim> offset   = x - nodes[i];
-        const double         distance = offset.norm();
-        const double         r        = distance / radii[i];
-        if (r >= 1.)
-          continue;
-        double w, dw_dr;
-        cubic_spline(r, w, dw_dr);
-        indices.push_back(i);
-        weights.push_back(w);
-        weight_gradients.push_back(distance > 0. ?
-                                     (dw_dr / (radii[i] * distance)) * offset :
-                                     Tensor<1, dim>());
-        length_scale = std::max(length_scale, radii[i]);
-      }
-    const unsigned int n = indices.size();
-    if (n < dim + 1)
-      {
-        std::ostringstream message;
-        message << "only " << n << " node(s) have x = (" << x
-                << ") inside their support, fewer than dim + 1 = " << dim + 1
-                << ": increase Max-ent support factor (now " << support_factor
-                << ").";
-        return message.str();
-      }
-
-    // Newton's method on ln Z(lambda) (Eq. 83) with a backtracking line
-    // search; Z_i = w_i exp(lambda . (x - x_i)), shifted by the largest
-    // exponent against overflow.
-    values.resize(n);
-    const auto ln_z = [&](const Tensor<1, dim> &lambda) {
-      double largest = -std::numeric_limits<double>::max();
-      for (unsigned int k = 0; k < n; ++k)
-        largest = std::max(largest, lambda * (x - nodes[indices[k]]));
-      double z = 0;
-      for (unsigned int k = 0; k < n; ++k)
+    for (unsigned int k = 0; k < candidates.size(); ++k)
+      if (values[k] > 0. ||
+          (!failure.empty() &&
+           std::find(reached.begin(), reached.end(), k) != reached.end()))
         {
-          values[k] =
-            weights[k] * std::exp(lambda * (x - nodes[indices[k]]) - largest);
-          z += values[k];
+          values[indices.size()]    = values[k];
+          gradients[indices.size()] = gradients[k];
+          indices.push_back(candidates[k]);
         }
-      for (unsigned int k = 0; k < n; ++k)
-        values[k] /= z;
-      return std::log(z) + largest;
-    };
-
-    const auto residual_of = [&]() {
-      Tensor<1, dim> r;
-      for (unsigned int k = 0; k < n; ++k)
-        r += values[k] * (x - nodes[indices[k]]);
-      return r;
-    };
-
-    // Start from the multipliers of the previous point (points come cell by
-    // cell, so it is usually a neighbour) unless lambda = 0 is closer.
-    Tensor<1, dim> lambda;
-    double         objective = ln_z(lambda);
-    Tensor<1, dim> residual  = residual_of();
-    {
-      const double         previous_objective = ln_z(previous_lambda);
-      const Tensor<1, dim> previous_residual  = residual_of();
-      if (previous_residual.norm() < residual.norm())
-        {
-          lambda    = previous_lambda;
-          objective = previous_objective;
-          residual  = previous_residual;
-        }
-      else
-        objective = ln_z(lambda);
-    }
-    Tensor<2, dim> hessian;
-    const double   tolerance = 1e-12 * length_scale;
-    bool           converged = false;
-    for (unsigned int iteration = 0; iteration < 100; ++iteration)
-      {
-        hessian = 0;
-        for (unsigned int k = 0; k < n; ++k)
-          {
-            const Tensor<1, dim> offset = x - nodes[indices[k]];
-            hessian += values[k] * outer_product(offset, offset);
-          }
-        hessian -= outer_product(residual, residual);
-        if (residual.norm() <= tolerance)
-          {
-            converged = true;
-            break;
-          }
-        if (!(determinant(hessian) > 0.))
-          break;
-        // Accept a step that decreases ln Z (Armijo) or, once ln Z is flat
-        // to round-off, the residual; otherwise halve it.
-        const Tensor<1, dim> step     = -(invert(hessian) * residual);
-        const double         slope    = residual * step;
-        double               alpha    = 1.;
-        bool                 accepted = false;
-        for (unsigned int halving = 0; halving < 40; ++halving, alpha *= 0.5)
-          {
-            const double         trial          = ln_z(lambda + alpha * step);
-            const Tensor<1, dim> trial_residual = residual_of();
-            if (trial <= objective + 1e-4 * alpha * slope ||
-                trial_residual.norm() < residual.norm())
-              {
-                lambda += alpha * step;
-                objective = trial;
-                residual  = trial_residual;
-                accepted  = true;
-                break;
-              }
-          }
-        if (!accepted)
-          {
-            objective = ln_z(lambda);
-            residual  = residual_of();
-            break;
-          }
-      }
-    if (!converged)
-      {
-        std::ostringstream message;
-        message << "the max-ent Lagrange multipliers at x = (" << x
-                << ") did not converge (residual " << residual.norm()
-                << "): x lies outside the convex hull of the " << n
-                << " nodes that reach it, or on its boundary. Keep the "
-                   "material inside the grid's nodes, or increase Max-ent "
-                   "support factor (now "
-                << support_factor << ").";
-        return message.str();
-      }
-
-    previous_lambda = lambda;
-
-    // Gradients (Eqs. 84-86 with the sign derived in the class
-    // documentation).
-    Tensor<1, dim> mean_log_gradient;
-    Tensor<2, dim> A;
-    for (unsigned int k = 0; k < n; ++k)
-      {
-        const Tensor<1, dim> log_gradient = weight_gradients[k] / weights[k];
-        mean_log_gradient += values[k] * log_gradient;
-        A += values[k] * outer_product(x - nodes[indices[k]], log_gradient);
-      }
-    const Tensor<2, dim> M =
-      (unit_symmetric_tensor<dim>() + transpose(A)) * invert(hessian);
-    gradients.resize(n);
-    for (unsigned int k = 0; k < n; ++k)
-      gradients[k] =
-        values[k] * (weight_gradients[k] / weights[k] - mean_log_gradient -
-                     M * (x - nodes[indices[k]]));
-    return "";
+    values.resize(indices.size());
+    gradients.resize(indices.size());
+    return failure;
   }
 
 
@@ -333,26 +391,59 @@ namespace MpmOtm
     data.indices.clear();
     data.values.clear();
     data.gradients.clear();
+    multipliers.resize(particles.get_next_free_particle_index());
 
-    std::vector<types::global_dof_index> &indices   = point_indices;
-    std::vector<double>                  &values    = point_values;
-    std::vector<Tensor<1, dim>>          &gradients = point_gradients;
-    unsigned int                          k         = 0;
+    // A point inside its cell's bounding box gets the cell's candidates, so
+    // that the points of a cell share their list of functions (the mass
+    // matrix sums them as one block); a point outside it (OTM: the nodes
+    // move with the material, but not as the cell's linear map) gets the
+    // candidates from the search tree.
+    typename Triangulation<dim>::active_cell_iterator current_cell;
+    unsigned int                                      cell = 0;
+    unsigned int                                      k    = 0;
     for (const auto &particle : particles)
       {
-        data.offsets[k] = data.indices.size();
-        const std::string failure =
-          evaluate_at(particle.get_location(), indices, values, gradients);
+        if (particle.get_surrounding_cell() != current_cell)
+          {
+            current_cell = particle.get_surrounding_cell();
+            cell         = current_cell->active_cell_index();
+          }
+        const Point<dim>   &x = particle.get_location();
+        const unsigned int *candidate_nodes;
+        unsigned int        n_candidates;
+        if (cell_boxes[cell].point_inside(x))
+          {
+            candidate_nodes = cell_nodes.data() + cell_node_offsets[cell];
+            n_candidates =
+              cell_node_offsets[cell + 1] - cell_node_offsets[cell];
+          }
+        else
+          {
+            candidates.clear();
+            search_tree->tree.query(bgi::intersects(x),
+                                    std::back_inserter(candidates));
+            candidate_nodes = candidates.data();
+            n_candidates    = candidates.size();
+          }
+
+        const unsigned int offset = data.indices.size();
+        data.offsets[k]           = offset;
+        data.indices.resize(offset + n_candidates);
+        data.values.resize(offset + n_candidates);
+        data.gradients.resize(offset + n_candidates);
+        const std::string failure = solve(x,
+                                          candidate_nodes,
+                                          n_candidates,
+                                          multipliers[particle.get_id()],
+                                          &data.values[offset],
+                                          &data.gradients[offset]);
         AssertThrow(failure.empty(),
                     ExcMessage("At material point " +
                                std::to_string(particle.get_id()) + ": " +
                                failure));
-        for (unsigned int e = 0; e < indices.size(); ++e)
-          {
-            data.indices.push_back(partitioner.global_to_local(indices[e]));
-            data.values.push_back(values[e]);
-            data.gradients.push_back(gradients[e]);
-          }
+        for (unsigned int e = 0; e < n_candidates; ++e)
+          data.indices[offset + e] =
+            partitioner.global_to_local(candidate_nodes[e]);
         ++k;
       }
     data.offsets[k] = data.indices.size();

@@ -129,15 +129,43 @@ namespace MpmOtm
     mutable std::vector<BoundingBox<dim>> supports;
     struct SearchTree;
     mutable std::unique_ptr<SearchTree> search_tree;
+    /// Each active cell's bounding box and the nodes whose support meets it
+    /// (cell c's nodes are cell_nodes[cell_node_offsets[c]] onwards).
+    mutable std::vector<BoundingBox<dim>> cell_boxes;
+    mutable std::vector<unsigned int>     cell_node_offsets;
+    mutable std::vector<unsigned int>     cell_nodes;
+    /// Each material point's multipliers of the last step (by particle id):
+    /// its next first guess.
+    mutable std::vector<Tensor<1, dim>> multipliers;
+    /// Multipliers of the last point evaluate_at() evaluated: the next one's
+    /// first guess.
+    mutable Tensor<1, dim> previous_lambda;
     /// Work arrays of one point, kept to avoid allocation per point.
-    mutable std::vector<unsigned int>   candidates;
-    mutable std::vector<double>         weights;
-    mutable std::vector<Tensor<1, dim>> weight_gradients;
-    /// Multipliers of the last point evaluated: the next one's first guess.
-    mutable Tensor<1, dim>                       previous_lambda;
+    mutable std::vector<unsigned int>            candidates;
+    mutable std::vector<unsigned int>            reached;
+    mutable std::vector<Tensor<1, dim>>          offsets;
+    mutable std::vector<double>                  weights;
+    mutable std::vector<Tensor<1, dim>>          log_weight_gradients;
+    mutable std::vector<double>                  phi_current;
+    mutable std::vector<double>                  phi_trial;
     mutable std::vector<types::global_dof_index> point_indices;
     mutable std::vector<double>                  point_values;
     mutable std::vector<Tensor<1, dim>>          point_gradients;
+
+    /**
+     * The values and gradients at @p x of the functions of the
+     * @p n_candidates nodes @p candidate_nodes (zero for those whose support
+     * does not contain x), by Newton's method from the multipliers
+     * @p lambda, which return the solution. Returns an empty string or what
+     * went wrong (see evaluate_at()).
+     */
+    std::string
+    solve(const Point<dim>         &x,
+          const unsigned int *const candidate_nodes,
+          const unsigned int        n_candidates,
+          Tensor<1, dim>           &lambda,
+          double *const             values,
+          Tensor<1, dim> *const     gradients) const;
   };
 } // namespace MpmOtm
 
