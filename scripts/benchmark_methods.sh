@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Cost of OTM-P1, BSMPM and the unified approach (P1 and quadratic
-# B-splines) relative to MPM-P1 on B1b (prm/B1b-bar-fixed-ends*.prm) at 32
+# Cost of OTM-P1, BSMPM, the unified approach (P1 and quadratic B-splines),
+# MPM-maxent and OTM-maxent relative to MPM-P1 on B1b (prm/B1b-bar-fixed-ends*.prm) at 32
 # and 512 nodes, next to the journal's Table 1. Each method's time loop (16000 steps at 32 nodes, 1000
 # at 512, dt = 1e-5; output only at the first and last step) is timed from
 # the run's own wall-time lines; the methods are run in turn, REPEATS times, and the fastest time of
@@ -32,7 +32,10 @@ methods=("MPM-P1|B1b-bar-fixed-ends.prm|"
          "Unified P1|B1b-bar-fixed-ends-otm.prm|set Method = Unified"
          "BSMPM p=2|B1b-bar-fixed-ends-bsmpm.prm|"
          "BSMPM p=2 lumped|B1b-bar-fixed-ends-bsmpm.prm|set Mass matrix = lumped"
-         "Unified p=2|B1b-bar-fixed-ends-unified.prm|")
+         "Unified p=2|B1b-bar-fixed-ends-unified.prm|"
+         "MPM-maxent|B1b-bar-fixed-ends-mpm-maxent.prm|"
+         "MPM-maxent lumped|B1b-bar-fixed-ends-mpm-maxent.prm|set Mass matrix = lumped"
+         "OTM-maxent|B1b-bar-fixed-ends-otm-maxent.prm|")
 declare -A best
 for nodes in 32 512; do
   for ((r = 0; r < repeats; ++r)); do
@@ -52,7 +55,9 @@ echo "|---|---|---|---|---|---|---|"
 declare -A journal=(["MPM-P1@32"]="1" ["MPM-P1@512"]="1" ["OTM-P1@32"]="1.48" ["OTM-P1@512"]="1.19"
                     ["Unified P1@32"]="-" ["Unified P1@512"]="-" ["MPM-P1 consistent@32"]="-" ["MPM-P1 consistent@512"]="-"
                     ["BSMPM p=2@32"]="1.32" ["BSMPM p=2@512"]="1.04" ["BSMPM p=2 lumped@32"]="1.32" ["BSMPM p=2 lumped@512"]="1.04"
-                    ["Unified p=2@32"]="1.78" ["Unified p=2@512"]="1.12")
+                    ["Unified p=2@32"]="1.78" ["Unified p=2@512"]="1.12"
+                    ["MPM-maxent@32"]="0.98" ["MPM-maxent@512"]="2.31" ["MPM-maxent lumped@32"]="0.98" ["MPM-maxent lumped@512"]="2.31"
+                    ["OTM-maxent@32"]="1.55" ["OTM-maxent@512"]="2.50")
 for entry in "${methods[@]}"; do
   IFS='|' read -r name _ _ <<< "$entry"
   row="| $name"

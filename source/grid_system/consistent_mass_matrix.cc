@@ -87,56 +87,51 @@ namespace MpmOtm
     };
 
     /**
-     * y = M x from the dense blocks of groups of points with the same
-     * functions, and the identity on the excluded coefficients.
+     * y = M x with the matrix in compressed rows on the locally stored
+     * coefficients (ghosts included), and the identity on the excluded
+     * coefficients.
      */
     template <int dim>
-    class GroupMassOperator
+    class SparseMassOperator
     {
     public:
       using VectorType = typename NodalSystem<dim>::VectorType;
 
-      GroupMassOperator(const std::vector<unsigned int> &group_offsets,
-                        const std::vector<unsigned int> &group_indices,
-                        const std::vector<std::size_t>  &block_offsets,
-                        const std::vector<double>       &group_blocks,
-                        const std::vector<unsigned int> &excluded)
-        : group_offsets(group_offsets)
-        , group_indices(group_indices)
-        , block_offsets(block_offsets)
-        , group_blocks(group_blocks)
+      SparseMassOperator(const std::vector<unsigned int> &row_offsets,
+                         const std::vector<unsigned int> &columns,
+                         const std::vector<double>       &entries,
+                         const std::vector<unsigned int> &excluded)
+        : row_offsets(row_offsets)
+        , columns(columns)
+        , entries(entries)
         , excluded(excluded)
       {}
 
       void
       vmult(VectorType &dst, const VectorType &src) const
       {
-        multiply_with_exclusions(
-          dst,
-          src,
-          excluded,
-          [&](const double *x, double *y) {
-            for (unsigned int g = 0; g + 1 < group_offsets.size(); ++g)
-              {
-                const unsigned int *indices = &group_indices[group_offsets[g]];
-                const unsigned int  n = group_offsets[g + 1] - group_offsets[g];
-                const double       *block = &group_blocks[block_offsets[g]];
-                for (unsigned int a = 0; a < n; ++a)
-                  {
-                    double sum = 0.;
-                    for (unsigned int b = 0; b < n; ++b)
-                      sum += block[a * n + b] * x[indices[b]];
-                    y[indices[a]] += sum;
-                  }
-              }
-          });
+        multiply_with_exclusions(dst,
+                                 src,
+                                 excluded,
+                                 [&](const double *x, double *y) {
+                                   for (unsigned int row = 0;
+                                        row + 1 < row_offsets.size();
+                                        ++row)
+                                     {
+                                       double sum = 0.;
+                                       for (unsigned int e = row_offsets[row];
+                                            e < row_offsets[row + 1];
+                                            ++e)
+                                         sum += entries[e] * x[columns[e]];
+                                       y[row] += sum;
+                                     }
+                                 });
       }
 
     private:
-      const std::vector<unsigned int> &group_offsets;
-      const std::vector<unsigned int> &group_indices;
-      const std::vector<std::size_t>  &block_offsets;
-      const std::vector<double>       &group_blocks;
+      const std::vector<unsigned int> &row_offsets;
+      const std::vector<unsigned int> &columns;
+      const std::vector<double>       &entries;
       const std::vector<unsigned int> &excluded;
     };
 
@@ -186,6 +181,8 @@ namespace MpmOtm
                                       const ParticleShapeData<dim> &shape_data)
   {
     // Consecutive points with the same function indices form a group.
+    const std::vector<unsigned int> previous_offsets = group_offsets;
+    const std::vector<unsigned int> previous_indices = group_indices;
     group_offsets.assign(1, 0);
     group_indices.clear();
     group_of_point.resize(shape_data.n_particles());
@@ -212,31 +209,102 @@ namespace MpmOtm
         group_of_point[k] = group_offsets.size() - 2;
       }
 
-    // Blocks pay when a product over them is cheaper than a point pass.
-    use_groups = block_cost < point_pass_cost;
-    block_offsets.clear();
-    group_blocks.clear();
-    if (!use_groups)
+    // The matrix pays when a product with it (at most one entry per pair of
+    // functions of a group) is cheaper than a point pass.
+    use_matrix = block_cost < point_pass_cost;
+    if (!use_matrix)
       return;
-    block_offsets.resize(group_offsets.size() - 1);
-    std::size_t size = 0;
-    for (unsigned int g = 0; g + 1 < group_offsets.size(); ++g)
-      {
-        block_offsets[g]    = size;
-        const std::size_t n = group_offsets[g + 1] - group_offsets[g];
-        size += n * n;
-      }
-    group_blocks.assign(size, 0.);
+    if (group_offsets != previous_offsets || group_indices != previous_indices)
+      build_sparsity(system.partitioner().locally_owned_size() +
+                     system.partitioner().n_ghost_indices());
+
+    // Sum m_p phi_a phi_b of each point into its group's entries.
+    entries.assign(columns.size(), 0.);
     for (unsigned int k = 0; k < shape_data.n_particles(); ++k)
       {
-        const unsigned int begin = shape_data.offsets[k];
-        const unsigned int n     = shape_data.offsets[k + 1] - begin;
-        double       *block = &group_blocks[block_offsets[group_of_point[k]]];
-        const double  m     = system.particle_mass[k];
-        const double *phi   = &shape_data.values[begin];
+        const unsigned int  begin = shape_data.offsets[k];
+        const unsigned int  n     = shape_data.offsets[k + 1] - begin;
+        const unsigned int *position =
+          &entry_of_block[block_offsets[group_of_point[k]]];
+        const double  m   = system.particle_mass[k];
+        const double *phi = &shape_data.values[begin];
         for (unsigned int a = 0; a < n; ++a)
-          for (unsigned int b = 0; b < n; ++b)
-            block[a * n + b] += m * phi[a] * phi[b];
+          {
+            const double m_phi = m * phi[a];
+            for (unsigned int b = 0; b < n; ++b)
+              entries[position[a * n + b]] += m_phi * phi[b];
+          }
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  ConsistentMassMatrix<dim>::build_sparsity(const unsigned int n_rows)
+  {
+    const unsigned int n_groups = group_offsets.size() - 1;
+
+    // The groups of each row (a row's function appears in them).
+    std::vector<unsigned int> groups_of_row_offsets(n_rows + 1, 0);
+    for (const unsigned int i : group_indices)
+      ++groups_of_row_offsets[i + 1];
+    for (unsigned int i = 0; i < n_rows; ++i)
+      groups_of_row_offsets[i + 1] += groups_of_row_offsets[i];
+    std::vector<unsigned int> groups_of_row(group_indices.size());
+    std::vector<unsigned int> place_in_group(group_indices.size());
+    {
+      std::vector<unsigned int> next(groups_of_row_offsets.begin(),
+                                     groups_of_row_offsets.end() - 1);
+      for (unsigned int g = 0; g < n_groups; ++g)
+        for (unsigned int a = group_offsets[g]; a < group_offsets[g + 1]; ++a)
+          {
+            const unsigned int slot = next[group_indices[a]]++;
+            groups_of_row[slot]     = g;
+            place_in_group[slot]    = a - group_offsets[g];
+          }
+    }
+
+    block_offsets.resize(n_groups);
+    std::size_t block_size = 0;
+    for (unsigned int g = 0; g < n_groups; ++g)
+      {
+        block_offsets[g]    = block_size;
+        const std::size_t n = group_offsets[g + 1] - group_offsets[g];
+        block_size += n * n;
+      }
+    entry_of_block.resize(block_size);
+
+    // Row by row: the columns are the union of the row's groups' functions;
+    // each group's block entry (a, b) of this row points to its column.
+    row_offsets.assign(1, 0);
+    columns.clear();
+    std::vector<unsigned int> entry_of_column(n_rows,
+                                              numbers::invalid_unsigned_int);
+    for (unsigned int row = 0; row < n_rows; ++row)
+      {
+        const unsigned int row_start = columns.size();
+        for (unsigned int s = groups_of_row_offsets[row];
+             s < groups_of_row_offsets[row + 1];
+             ++s)
+          {
+            const unsigned int  g = groups_of_row[s];
+            const unsigned int  n = group_offsets[g + 1] - group_offsets[g];
+            const unsigned int *indices = &group_indices[group_offsets[g]];
+            unsigned int       *position =
+              &entry_of_block[block_offsets[g] + place_in_group[s] * n];
+            for (unsigned int b = 0; b < n; ++b)
+              {
+                unsigned int &entry = entry_of_column[indices[b]];
+                if (entry == numbers::invalid_unsigned_int || entry < row_start)
+                  {
+                    entry = columns.size();
+                    columns.push_back(indices[b]);
+                  }
+                position[b] = entry;
+              }
+          }
+        row_offsets.push_back(columns.size());
       }
   }
 
@@ -275,15 +343,12 @@ namespace MpmOtm
     SolverCG<VectorType> cg(control);
     try
       {
-        if (use_groups)
-          cg.solve(GroupMassOperator<dim>(group_offsets,
-                                          group_indices,
-                                          block_offsets,
-                                          group_blocks,
-                                          excluded),
-                   solution,
-                   rhs,
-                   preconditioner);
+        if (use_matrix)
+          cg.solve(
+            SparseMassOperator<dim>(row_offsets, columns, entries, excluded),
+            solution,
+            rhs,
+            preconditioner);
         else
           cg.solve(ParticleMassOperator<dim>(shape_data,
                                              system.particle_mass,

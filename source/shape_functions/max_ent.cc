@@ -126,6 +126,7 @@ namespace MpmOtm
     // zeta_i: distance to the nearest other node.
     const auto point_tree = pack_rtree_of_indices(nodes);
     radii.resize(nodes.size());
+    inverse_radii.resize(nodes.size());
     supports.resize(nodes.size());
     std::vector<unsigned int> nearest;
     for (unsigned int i = 0; i < nodes.size(); ++i)
@@ -141,6 +142,7 @@ namespace MpmOtm
                     ExcMessage("Max-ent shape functions need at least two "
                                "distinct nodes."));
         radii[i]         = support_factor * zeta;
+        inverse_radii[i] = 1. / radii[i];
         Point<dim> lower = nodes[i], upper = nodes[i];
         for (unsigned int d = 0; d < dim; ++d)
           {
@@ -199,32 +201,45 @@ namespace MpmOtm
   {
     // The candidates whose support contains x: their offsets x - x_i, priors
     // and logarithmic prior gradients grad w_i / w_i.
-    reached.clear();
-    offsets.clear();
-    weights.clear();
-    log_weight_gradients.clear();
-    double length_scale = 0;
+    // (Sized once for all candidates and filled through raw pointers: no
+    // allocation once the arrays have grown.)
+    if (reached.size() < n_candidates)
+      {
+        reached.resize(n_candidates);
+        offsets.resize(n_candidates);
+        weights.resize(n_candidates);
+        log_weight_gradients.resize(n_candidates);
+        phi_current.resize(n_candidates);
+        phi_trial.resize(n_candidates);
+      }
+    unsigned int   *reached_candidate = reached.data();
+    Tensor<1, dim> *offset            = offsets.data();
+    double         *weight            = weights.data();
+    Tensor<1, dim> *log_gradient      = log_weight_gradients.data();
+    unsigned int    n                 = 0;
+    double          length_scale      = 0;
     for (unsigned int k = 0; k < n_candidates; ++k)
       {
-        values[k]                     = 0.;
-        gradients[k]                  = Tensor<1, dim>();
-        const unsigned int   i        = candidate_nodes[k];
-        const Tensor<1, dim> offset   = x - nodes[i];
-        const double         distance = offset.norm();
-        const double         r        = distance / radii[i];
+        values[k]               = 0.;
+        gradients[k]            = Tensor<1, dim>();
+        const unsigned int   i  = candidate_nodes[k];
+        const Tensor<1, dim> dx = x - nodes[i];
+        const double distance   = (dim == 1) ? std::abs(dx[0]) : dx.norm();
+        const double r          = distance * inverse_radii[i];
         if (r >= 1.)
           continue;
         double w, dw_dr;
         cubic_spline(r, w, dw_dr);
-        reached.push_back(k);
-        offsets.push_back(offset);
-        weights.push_back(w);
-        log_weight_gradients.push_back(
-          distance > 0. ? (dw_dr / (w * radii[i] * distance)) * offset :
-                          Tensor<1, dim>());
-        length_scale = std::max(length_scale, radii[i]);
+        reached_candidate[n] = k;
+        offset[n]            = dx;
+        weight[n]            = w;
+        log_gradient[n]      = distance > 0. ?
+                                 (dw_dr * inverse_radii[i] / (w * distance)) * dx :
+                                 Tensor<1, dim>();
+        length_scale         = std::max(length_scale, radii[i]);
+        ++n;
       }
-    const unsigned int n = reached.size();
+    n_reached = n;
     if (n < dim + 1)
       {
         std::ostringstream message;
@@ -241,29 +256,39 @@ namespace MpmOtm
     // H = sum_k phi_k (x - x_k) (x - x_k)^T - r r^T.
     struct State
     {
-      double         ln_z;
+      /// Z = z exp(shift).
+      double         z;
+      double         shift;
       Tensor<1, dim> residual;
       Tensor<2, dim> hessian;
+      double
+      ln_z() const
+      {
+        return std::log(z) + shift;
+      }
     };
-    const auto pass = [&](const Tensor<1, dim> &l, std::vector<double> &phi) {
-      phi.resize(n);
-      double largest = -std::numeric_limits<double>::max();
-      for (unsigned int k = 0; k < n; ++k)
-        largest = std::max(largest, l * offsets[k]);
-      double z = 0;
+    const auto pass = [&](const Tensor<1, dim> &l, double *const phi) {
+      // |l . (x - x_k)| < |l| length_scale: shift only where exp could
+      // overflow.
+      State state{0., 0., {}, {}};
+      if (l.norm() * length_scale > 300.)
+        {
+          state.shift = -std::numeric_limits<double>::max();
+          for (unsigned int k = 0; k < n; ++k)
+            state.shift = std::max(state.shift, l * offset[k]);
+        }
       for (unsigned int k = 0; k < n; ++k)
         {
-          phi[k] = weights[k] * std::exp(l * offsets[k] - largest);
-          z += phi[k];
+          phi[k] = weight[k] * std::exp(l * offset[k] - state.shift);
+          state.z += phi[k];
         }
-      State        state{std::log(z) + largest, {}, {}};
-      const double inverse_z = 1. / z;
+      const double inverse_z = 1. / state.z;
       for (unsigned int k = 0; k < n; ++k)
         {
           phi[k] *= inverse_z;
-          const Tensor<1, dim> weighted = phi[k] * offsets[k];
+          const Tensor<1, dim> weighted = phi[k] * offset[k];
           state.residual += weighted;
-          state.hessian += outer_product(weighted, offsets[k]);
+          state.hessian += outer_product(weighted, offset[k]);
         }
       state.hessian -= outer_product(state.residual, state.residual);
       return state;
@@ -273,7 +298,9 @@ namespace MpmOtm
     // search: accept a step that decreases ln Z (Armijo) or, once ln Z is
     // flat to round-off, the residual; otherwise halve it.
     const double tolerance = 1e-12 * length_scale;
-    State        state     = pass(lambda, phi_current);
+    double      *phi       = phi_current.data();
+    double      *trial_phi = phi_trial.data();
+    State        state     = pass(lambda, phi);
     bool         converged = false;
     for (unsigned int iteration = 0; iteration < 100; ++iteration)
       {
@@ -291,13 +318,13 @@ namespace MpmOtm
         bool                 accepted = false;
         for (unsigned int halving = 0; halving < 40; ++halving, alpha *= 0.5)
           {
-            const State trial = pass(lambda + alpha * step, phi_trial);
-            if (trial.ln_z <= state.ln_z + 1e-4 * alpha * slope ||
-                trial.residual.norm() < residual_norm)
+            const State trial = pass(lambda + alpha * step, trial_phi);
+            if (trial.residual.norm() < residual_norm ||
+                trial.ln_z() <= state.ln_z() + 1e-4 * alpha * slope)
               {
                 lambda += alpha * step;
                 state = trial;
-                std::swap(phi_current, phi_trial);
+                std::swap(phi, trial_phi);
                 accepted = true;
                 break;
               }
@@ -325,18 +352,16 @@ namespace MpmOtm
     Tensor<2, dim> A;
     for (unsigned int k = 0; k < n; ++k)
       {
-        mean_log_gradient += phi_current[k] * log_weight_gradients[k];
-        A +=
-          outer_product(phi_current[k] * offsets[k], log_weight_gradients[k]);
+        mean_log_gradient += phi[k] * log_gradient[k];
+        A += outer_product(phi[k] * offset[k], log_gradient[k]);
       }
     const Tensor<2, dim> M =
       (unit_symmetric_tensor<dim>() + transpose(A)) * invert(state.hessian);
     for (unsigned int k = 0; k < n; ++k)
       {
-        values[reached[k]] = phi_current[k];
-        gradients[reached[k]] =
-          phi_current[k] *
-          (log_weight_gradients[k] - mean_log_gradient - M * offsets[k]);
+        values[reached_candidate[k]] = phi[k];
+        gradients[reached_candidate[k]] =
+          phi[k] * (log_gradient[k] - mean_log_gradient - M * offset[k]);
       }
     return "";
   }
@@ -366,7 +391,8 @@ namespace MpmOtm
     for (unsigned int k = 0; k < candidates.size(); ++k)
       if (values[k] > 0. ||
           (!failure.empty() &&
-           std::find(reached.begin(), reached.end(), k) != reached.end()))
+           std::find(reached.begin(), reached.begin() + n_reached, k) !=
+             reached.begin() + n_reached))
         {
           values[indices.size()]    = values[k];
           gradients[indices.size()] = gradients[k];

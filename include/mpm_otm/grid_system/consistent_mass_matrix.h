@@ -7,15 +7,15 @@ namespace MpmOtm
 {
   /**
    * The consistent mass matrix (journal Eq. 19), solved with conjugate
-   * gradients preconditioned by the lumped masses. No global matrix or
-   * sparsity pattern is built. Points with the same functions (the points of
-   * one cell, for every family whose functions are fixed per cell) form a
-   * group whose dense block sum_p m_p phi phi^T is summed once per step, and
-   * a product with the matrix is one pass over the groups. Where groups do
-   * not pay (one function set per point, as for max-ent), the product is a
-   * pass over the points, sum_p m_p phi_i (sum_j phi_j x_j). Both work for
-   * every family and in parallel. A solve that does not converge stops the
-   * run.
+   * gradients preconditioned by the lumped masses. Points with the same
+   * functions (the points of one cell, for every family) form a group; the
+   * entries sum_p m_p phi_i phi_j are summed once per step into one matrix in
+   * compressed rows on the locally stored coefficients, whose pattern (the
+   * pairs of functions that share a group) is rebuilt only when the groups
+   * change. Where that does not pay (few points per set of functions), a
+   * product is a pass over the points, sum_p m_p phi_i (sum_j phi_j x_j).
+   * Both work for every family and in parallel. A solve that does not
+   * converge stops the run.
    */
   template <int dim>
   class ConsistentMassMatrix : public MassMatrix<dim>
@@ -27,7 +27,7 @@ namespace MpmOtm
     declare_parameters(ParameterHandler &prm);
 
     /**
-     * Sum the blocks of the point groups, or choose the point pass.
+     * Assemble the matrix from the point groups, or choose the point pass.
      */
     void
     assemble(const NodalSystem<dim>       &system,
@@ -41,18 +41,31 @@ namespace MpmOtm
           const unsigned int            component) const override;
 
   private:
-    /// Whether the products use the group blocks.
-    bool use_groups = false;
+    /**
+     * The compressed rows of the matrix on @p n_rows locally stored
+     * coefficients and, for every entry of every group's block, the matrix
+     * entry it adds to.
+     */
+    void
+    build_sparsity(const unsigned int n_rows);
+
+    /// Whether the products use the assembled matrix (or a point pass).
+    bool use_matrix = false;
     /// Start of each group's function indices in group_indices.
     std::vector<unsigned int> group_offsets;
     /// Local indices of the functions of each group.
     std::vector<unsigned int> group_indices;
     /// The group of each point.
     std::vector<unsigned int> group_of_point;
-    /// Start of each group's dense block in group_blocks (only if used).
+    /// Start of each group's row-major block in entry_of_block.
     std::vector<std::size_t> block_offsets;
-    /// Row-major blocks sum_p m_p phi_a phi_b of the groups.
-    std::vector<double> group_blocks;
+    /// The matrix entry of each group's block entry (a, b).
+    std::vector<unsigned int> entry_of_block;
+    /// The matrix in compressed rows on the local coefficients (ghosts
+    /// included; their rows are added to the owners in a product).
+    std::vector<unsigned int> row_offsets;
+    std::vector<unsigned int> columns;
+    std::vector<double>       entries;
   };
 } // namespace MpmOtm
 

@@ -125,6 +125,7 @@ namespace MpmOtm
     /// Current node positions and support radii, by function index.
     mutable std::vector<Point<dim>> nodes;
     mutable std::vector<double>     radii;
+    mutable std::vector<double>     inverse_radii;
     /// Bounding boxes of the supports and their R-tree.
     mutable std::vector<BoundingBox<dim>> supports;
     struct SearchTree;
@@ -141,8 +142,11 @@ namespace MpmOtm
     /// first guess.
     mutable Tensor<1, dim> previous_lambda;
     /// Work arrays of one point, kept to avoid allocation per point.
-    mutable std::vector<unsigned int>            candidates;
+    mutable std::vector<unsigned int> candidates;
+    /// The first n_reached entries of reached are the candidates whose
+    /// support contains the last point solve() was called for.
     mutable std::vector<unsigned int>            reached;
+    mutable unsigned int                         n_reached = 0;
     mutable std::vector<Tensor<1, dim>>          offsets;
     mutable std::vector<double>                  weights;
     mutable std::vector<Tensor<1, dim>>          log_weight_gradients;
