@@ -11,9 +11,14 @@
 //   reproduction balances their weight, about delta / h, against the face
 //   nodes'): at delta = 1e-3 h they sum to below 2e-3, so on the face the
 //   field is that of the face's nodes alone and Dirichlet conditions on
-//   boundary nodes act on the boundary.
+//   boundary nodes act on the boundary;
+// - the evaluation of all material points (evaluate(): each cell's list of
+//   candidate nodes, or the R-tree for a point that has left its cell's
+//   bounding box, as OTM points may) equals the evaluation point by point
+//   (evaluate_at()), and the padded functions of a cell's list are zero.
 
 #include <mpm_otm/grid_system/background_grid.h>
+#include <mpm_otm/material_points/material_points.h>
 #include <mpm_otm/shape_functions/max_ent.h>
 
 #include <random>
@@ -122,6 +127,102 @@ namespace
   }
 
   /**
+   * evaluate() on the material points of a unit box against evaluate_at(),
+   * first with every point in its cell, then with the points of the lower
+   * half moved 0.6 h in x off their cells (their cells stay), which takes
+   * the R-tree path.
+   */
+  template <int dim>
+  void
+  check_point_pass(const unsigned int n_cells)
+  {
+    auto simulator =
+      make_unit_box_simulator<dim>(n_cells, "output-max-ent-grid");
+    MaxEnt<dim> functions(2.);
+    functions.initialize(simulator->background_grid());
+    const Utilities::MPI::Partitioner partitioner(
+      functions.locally_owned_functions(),
+      functions.locally_relevant_functions(),
+      MPI_COMM_WORLD);
+    // The test moves points off their cells as OTM's update may.
+    auto &particles =
+      const_cast<MaterialPoints<dim> &>(simulator->material_points())
+        .particle_handler();
+
+    std::vector<types::global_dof_index> indices;
+    std::vector<double>                  values;
+    std::vector<Tensor<1, dim>>          gradients;
+    for (const bool moved : {false, true})
+      {
+        unsigned int n_moved = 0;
+        if (moved)
+          for (auto &particle : particles)
+            {
+              Point<dim> x = particle.get_location();
+              if (x[0] < 0.5)
+                {
+                  x[0] += 0.6 / n_cells;
+                  particle.set_location(x);
+                  ++n_moved;
+                }
+            }
+        ParticleShapeData<dim> data;
+        functions.evaluate(simulator->material_points(), partitioner, data);
+        double       difference = 0, padded = 0;
+        unsigned int k = 0, n_entries = 0, missing = 0;
+        for (const auto &particle : particles)
+          {
+            const std::string failure =
+              functions.evaluate_at(particle.get_location(),
+                                    indices,
+                                    values,
+                                    gradients);
+            check(failure.empty(), failure);
+            for (unsigned int e = data.offsets[k]; e < data.offsets[k + 1]; ++e)
+              {
+                const types::global_dof_index index =
+                  partitioner.local_to_global(data.indices[e]);
+                const auto found =
+                  std::find(indices.begin(), indices.end(), index);
+                if (found == indices.end())
+                  padded = std::max({padded,
+                                     std::abs(data.values[e]),
+                                     data.gradients[e].norm()});
+                else
+                  {
+                    const unsigned int j = found - indices.begin();
+                    difference           = std::max(
+                      {difference,
+                                 std::abs(data.values[e] - values[j]),
+                                 (data.gradients[e] - gradients[j]).norm() / n_cells});
+                    ++n_entries;
+                  }
+              }
+            // Every function that does not vanish at the point is listed.
+            missing += indices.size() - n_entries;
+            n_entries = 0;
+            ++k;
+          }
+        deallog << dim << "D, "
+                << (moved ? "points of the lower half moved "
+                            "off their cells" :
+                            "points in their cells")
+                << ": evaluate() equals evaluate_at() to 1e-10 "
+                << (difference < 1e-10) << ", padded functions zero "
+                << (padded == 0.) << ", none missing " << (missing == 0)
+                << std::endl;
+        check(k == data.n_particles() && (!moved || n_moved > 0),
+              "point count");
+        check(difference < 1e-10,
+              "evaluate() against evaluate_at(): " + rounded(difference));
+        check(padded == 0., "padded function not zero: " + rounded(padded));
+        check(missing == 0, "functions missing from a point's list");
+      }
+  }
+
+
+
+  /**
    * Bad input is reported, never a NaN: a point that too few supports
    * reach, and a point outside the convex hull of the nodes.
    */
@@ -166,4 +267,6 @@ main(int argc, char **argv)
   check_properties<2>(6, 2.);
   check_properties<2>(6, 3.);
   check_properties<3>(4, 2.);
+  check_point_pass<1>(8);
+  check_point_pass<2>(6);
 }
