@@ -170,6 +170,12 @@ namespace MpmOtm
       PluginRegistry<ShapeFunctions<dim>>::create(prm.get("Shape functions"));
     shape_functions->parse_parameters(prm);
     const std::string method = prm.get("Method");
+    AssertThrow(method == "MPM" || prm.get("Shape functions") != "Powell-Sabin",
+                ExcMessage("Shape functions = Powell-Sabin run with Method = "
+                           "MPM (Update scheme = USL or MUSL): their three "
+                           "functions per vertex do not move with the "
+                           "vertices, which OTM and the unified approach "
+                           "need (a moving triangulation is future work)."));
     if (method == "OTM")
       {
         AssertThrow(prm.get("Update scheme") == "USL",
