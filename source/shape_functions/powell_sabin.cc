@@ -118,7 +118,7 @@ namespace MpmOtm
 
     /**
      * The control triangle of a vertex @p vertex with Powell-Sabin points
-     * @p points (design note 1.4): among the triangles formed by three edges
+     * @p points (thesis Sect. 3.5.2): among the triangles formed by three edges
      * of the points' convex hull, or by two and a third edge orthogonal to
      * their bisector through the farthest point, that contain all points and
      * use every hull edge through the vertex, the one of smallest area
@@ -578,7 +578,7 @@ namespace MpmOtm
     const std::array<double, 3> zeta = {{1. - xi[0] - xi[1], xi[0], xi[1]}};
 
     // Fan triangle (V_k, V_{k+1}, Z) opposite the vertex m with the smallest
-    // zeta_m / a_m, and the coordinates (s, t, w) there (design note 1.7).
+    // zeta_m / a_m, and the coordinates (s, t, w) there.
     unsigned int k, half;
     if (sub_triangle == numbers::invalid_unsigned_int)
       {
@@ -621,7 +621,7 @@ namespace MpmOtm
     double b[6], db[6][3];
     bernstein(sigma, b, db);
 
-    // The six ordinates of each function on T_{k,half} (design note 1.6 (c)):
+    // The six ordinates of each function on T_{k,half} (thesis Eqs. 3.54-3.58):
     // the owner V_k, V_{k+1} or the far vertex V_{k+2}.
     for (unsigned int j = 0; j < 3; ++j)
       {

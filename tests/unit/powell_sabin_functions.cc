@@ -20,7 +20,8 @@
 //   tangential derivative vanish along the whole side;
 // - the control triangle of the centre vertex of the 3 x 3 grid and the
 //   values of its functions at (0.4, 0.45) equal those of an independent
-//   implementation of the same rule (the design note's prototype), to 1e-6
+//   implementation of the same rule (a Python prototype written when this
+//   class was designed, not part of the repository), to 1e-6
 //   and 1e-10.
 // Through the simulator (Shape functions = Powell-Sabin on the B5 grid of
 // four triangles per block, 4 x 1 blocks on 25 x 2), evaluate() at the

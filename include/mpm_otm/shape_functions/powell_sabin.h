@@ -183,7 +183,7 @@ namespace MpmOtm
      * coordinates a_k, split weights rho_k (R_k = rho_k V_k + (1 - rho_k)
      * V_{k+1}), gradients of the barycentric coordinates, and per function
      * the ordinates f, Lf, Lb, Lt of the owner vertex V_j at V_j,
-     * mid(V_j, R_j), mid(V_j, R_{j-1}) and mid(V_j, Z) (design note 1.6).
+     * mid(V_j, R_j), mid(V_j, R_{j-1}) and mid(V_j, Z) (thesis Eqs. 3.54-3.56).
      */
     struct CellData
     {
