@@ -59,13 +59,15 @@ set xlabel "t (s)"
 set ylabel "u_y (m)"
 set key bottom right
 plot "data/B6-top.dat" using 1:3 with lines lw 3 lc rgb "gray" title "exact (series)", \
-     "data/B6-top.dat" using 1:2 with lines lw 1.5 lc rgb "blue" title "mpm-otm, Lagrange MPM 2 x 16 blocks"
+     "data/B6-top.dat" using 1:2 with lines lw 1.5 lc rgb "blue" title "mpm-otm, Lagrange MPM 2 x 16 blocks", \
+     "data/B6-top-powell-sabin.dat" using 1:2 with lines lw 1.5 dt 2 lc rgb "dark-green" title "mpm-otm, Powell-Sabin MPM 1 x 8 blocks"
 
 set output "figures/B6-top-velocity.png"
 set title "B6 small deformation: velocity of the top of the soil column (thesis Fig. 4.10)"
 set ylabel "v_y (m/s)"
 plot "data/B6-top.dat" using 1:5 with lines lw 3 lc rgb "gray" title "exact (series)", \
-     "data/B6-top.dat" using 1:4 with lines lw 1.5 lc rgb "blue" title "mpm-otm, Lagrange MPM 2 x 16 blocks"
+     "data/B6-top.dat" using 1:4 with lines lw 1.5 lc rgb "blue" title "mpm-otm, Lagrange MPM 2 x 16 blocks", \
+     "data/B6-top-powell-sabin.dat" using 1:4 with lines lw 1.5 dt 2 lc rgb "dark-green" title "mpm-otm, Powell-Sabin MPM 1 x 8 blocks"
 
 set output "figures/B2-stress.png"
 set title "B2: stress at T = 0.4, 68 material nodes, 4 points per cell (journal Fig. 7)"
@@ -88,26 +90,44 @@ plot "data/B2-profile-otm.dat" using 1:3 with lines lw 3 lc rgb "gray" title "ex
      "data/B2-profile-unified.dat" using 1:2 with points pt 4 ps 0.6 lc rgb "black" title "mpm-otm, unified p = 2"
 
 set output "figures/B5-large.png"
-set multiplot layout 2,1 title "B5 large deformation: middle of the bar (thesis Fig. 4.7)"
+set multiplot layout 2,1 title "B5 large deformation: middle of the bar (thesis Figs. 4.7 and 4.8)"
 set title ""
 set xlabel "t (s)"
 set ylabel "u_x (m)"
 set key bottom left
 plot "data/B5-large.dat" using 1:2 with lines lw 3 lc rgb "gray" title "1D OTM-P1 reference", \
-     "data/B5-large.dat" using 1:4 with lines lw 1.5 lc rgb "red" title "mpm-otm, Lagrange MPM 16 x 1 blocks, 56 points per triangle"
+     "data/B5-large.dat" using 1:4 with lines lw 1.5 lc rgb "red" title "mpm-otm, Lagrange MPM 16 x 1 blocks, 56 points per triangle", \
+     "data/B5-large.dat" using 1:6 with lines lw 1.5 dt 2 lc rgb "dark-green" title "mpm-otm, Powell-Sabin MPM 8 x 1 blocks, 20 points per triangle"
 set ylabel "v_x (m/s)"
 plot "data/B5-large.dat" using 1:3 with lines lw 3 lc rgb "gray" title "1D OTM-P1 reference", \
-     "data/B5-large.dat" using 1:5 with lines lw 1.5 lc rgb "red" title "mpm-otm, Lagrange MPM"
+     "data/B5-large.dat" using 1:5 with lines lw 1.5 lc rgb "red" title "mpm-otm, Lagrange MPM", \
+     "data/B5-large.dat" using 1:7 with lines lw 1.5 dt 2 lc rgb "dark-green" title "mpm-otm, Powell-Sabin MPM"
 unset multiplot
 
 set output "figures/B6-large.png"
 set multiplot layout 2,1 title "B6 large deformation: top of the soil column (thesis Fig. 4.13)"
 set ylabel "u_y (m)"
 plot "data/B6-large.dat" using 1:2 with lines lw 3 lc rgb "gray" title "1D OTM-P1 reference", \
-     "data/B6-large.dat" using 1:4 with lines lw 1.5 lc rgb "red" title "mpm-otm, Lagrange MPM 1 x 4 blocks, 72 points per triangle"
+     "data/B6-large.dat" using 1:4 with lines lw 1.5 lc rgb "red" title "mpm-otm, Lagrange MPM 1 x 4 blocks, 72 points per triangle", \
+     "data/B6-large.dat" using 1:6 with lines lw 1.5 dt 2 lc rgb "dark-green" title "mpm-otm, Powell-Sabin MPM, same grid"
 set ylabel "v_y (m/s)"
 plot "data/B6-large.dat" using 1:3 with lines lw 3 lc rgb "gray" title "1D OTM-P1 reference", \
-     "data/B6-large.dat" using 1:5 with lines lw 1.5 lc rgb "red" title "mpm-otm, Lagrange MPM"
+     "data/B6-large.dat" using 1:5 with lines lw 1.5 lc rgb "red" title "mpm-otm, Lagrange MPM", \
+     "data/B6-large.dat" using 1:7 with lines lw 1.5 dt 2 lc rgb "dark-green" title "mpm-otm, Powell-Sabin MPM"
+unset multiplot
+
+set output "figures/B6-remedies.png"
+set multiplot layout 2,1 title "B6 large deformation, Powell-Sabin MPM on 1 x 8 (+1 empty) blocks: mass-matrix remedies (thesis Ch. 5)"
+set ylabel "u_y (m)"
+plot "data/B6-remedies.dat" using 1:2 with lines lw 3 lc rgb "gray" title "1D OTM-P1 reference", \
+     "data/B6-remedies.dat" using 1:4 with lines lw 1.5 lc rgb "dark-green" title "partially lumped", \
+     "data/B6-remedies.dat" using 1:6 with lines lw 1.5 lc rgb "blue" title "lumped", \
+     "data/B6-remedies.dat" using 1:8 with lines lw 1.5 lc rgb "red" title "consistent, deactivation below 1e-2"
+set ylabel "v_y (m/s)"
+plot "data/B6-remedies.dat" using 1:3 with lines lw 3 lc rgb "gray" title "1D OTM-P1 reference", \
+     "data/B6-remedies.dat" using 1:5 with lines lw 1.5 lc rgb "dark-green" title "partially lumped", \
+     "data/B6-remedies.dat" using 1:7 with lines lw 1.5 lc rgb "blue" title "lumped", \
+     "data/B6-remedies.dat" using 1:9 with lines lw 1.5 lc rgb "red" title "consistent, deactivation below 1e-2"
 unset multiplot
 
 set output "figures/B3-sigma11.png"

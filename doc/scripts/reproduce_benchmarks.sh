@@ -26,16 +26,16 @@ last() { tail -1 run/statistics.csv | cut -d, -f"$1"; }
 
 # Time series of the tracked points of a run: for each particles-*.csv of
 # ./run, the time (step * $2) and the mean displacement and velocity of the
-# points nearest the middle X = $3 of a 1D/2D bar ($1 = middle) or of the top
-# row of a column ($1 = top).
+# points within $4 (default 0.05) of the middle X = $3 of a 1D/2D bar
+# ($1 = middle) or of the top row of a column ($1 = top).
 track() {
   for file in run/particles-*.csv; do
     step=$(basename "$file" .csv | sed 's/particles-0*//')
-    awk -F, -v mode="$1" -v t="$(awk "BEGIN{print ${step:-0} * $2}")" -v middle="${3:-0}" '
+    awk -F, -v mode="$1" -v t="$(awk "BEGIN{print ${step:-0} * $2}")" -v middle="${3:-0}" -v half_width="${4:-0.05}" '
       NR == 1 { for (i = 1; i <= NF; i++) col[$i] = i
                 up = ("Y" in col) ? "Y" : "X"; u = ("uy" in col && mode == "top") ? "uy" : "ux"
                 v = ("vy" in col && mode == "top") ? "vy" : "vx" }
-      NR > 1 && mode == "middle" && ($(col["X"]) - middle)^2 < 0.0025 { su += $(col[u]); sv += $(col[v]); n++ }
+      NR > 1 && mode == "middle" && ($(col["X"]) - middle)^2 < half_width^2 { su += $(col[u]); sv += $(col[v]); n++ }
       NR > 1 && mode == "top" { y = $(col[up]); if (y > top + 1e-9) { top = y; su = 0; sv = 0; n = 0 }
                                 if (y > top - 1e-9) { su += $(col[u]); sv += $(col[v]); n++ } }
       END { printf "%.6g %.8e %.8e\n", t, su / n, sv / n }' "$file"
@@ -155,10 +155,10 @@ end"
   done
 } > "$data/B5-lagrange.dat"
 
-echo "B6: top displacement of the soil column"
-run B6-soil-column-small.prm ""
-{
-  echo "# time  top_displacement  exact  top_velocity  exact  (prm/B6-soil-column-small.prm)"
+echo "B6: top displacement of the soil column (Lagrange and Powell-Sabin MPM)"
+# The top row of points of ./run against the exact series (BENCHMARKS.md B6).
+top_against_exact() {
+  echo "# time  top_displacement  exact  top_velocity  exact  (prm/$1)"
   for file in run/particles-*.csv; do
     step=$(basename "$file" .csv | sed 's/particles-0*//')
     awk -F, -v step="${step:-0}" 'NR > 1 { if ($3 > top + 1e-9) { top = $3; u = 0; v = 0; n = 0 }
@@ -169,25 +169,58 @@ run B6-soil-column-small.prm ""
           ue += a * (1 - cos(c * kk * t)) * sin(kk * top); ve += a * c * kk * sin(c * kk * t) * sin(kk * top) }
         printf "%.6g %.8e %.8e %.8e %.8e\n", t, u / n, g / (c * c) * ue, v / n, g / (c * c) * ve }' "$file"
   done | sort -g
-} > "$data/B6-top.dat"
+}
+run B6-soil-column-small.prm ""
+top_against_exact B6-soil-column-small.prm > "$data/B6-top.dat"
+run B6-soil-column-small-powell-sabin.prm ""
+top_against_exact B6-soil-column-small-powell-sabin.prm > "$data/B6-top-powell-sabin.dat"
+run B6-soil-column-small-powell-sabin.prm "subsection Mesh
+ set Subdivisions = 2, 16
+end"
+top_against_exact "B6-soil-column-small-powell-sabin.prm on 2 x 16 blocks" > "$data/B6-top-powell-sabin-2x16.dat"
 
 echo "B5 and B6, large deformation: Lagrange MPM against the 1D OTM reference"
 run B5-bar-large-reference-1d.prm ""
 track middle 1e-3 12.5 > reference.dat
 run B5-bar-2d-large.prm ""
 track middle 1e-3 12.5 > mpm.dat
+# Powell-Sabin: 10 points per block of width 3.125 in x; the nearest to the
+# middle are 0.156 from it, where u differs from the middle's by 2e-4.
+run B5-bar-2d-large-powell-sabin.prm ""
+track middle 1e-3 12.5 0.16 > powell-sabin.dat
 {
-  echo "# time  u_reference  v_reference  u_MPM  v_MPM  (middle of the bar; prm/B5-bar-large-reference-1d.prm, prm/B5-bar-2d-large.prm)"
-  paste -d' ' reference.dat <(cut -d' ' -f2,3 mpm.dat)
+  echo "# time  u_reference  v_reference  u_MPM  v_MPM  u_PS_MPM  v_PS_MPM  (middle of the bar; prm/B5-bar-large-reference-1d.prm, prm/B5-bar-2d-large.prm, prm/B5-bar-2d-large-powell-sabin.prm)"
+  paste -d' ' reference.dat <(cut -d' ' -f2,3 mpm.dat) <(cut -d' ' -f2,3 powell-sabin.dat)
 } > "$data/B5-large.dat"
 run B6-soil-column-large-reference-1d.prm ""
 track top 2e-5 > reference.dat
 run B6-soil-column-2d-large.prm ""
 track top 1e-4 > mpm.dat
+run B6-soil-column-2d-large-powell-sabin.prm ""
+track top 1e-4 > powell-sabin.dat
 {
-  echo "# time  u_reference  v_reference  u_MPM  v_MPM  (top of the column; prm/B6-soil-column-large-reference-1d.prm, prm/B6-soil-column-2d-large.prm)"
-  paste -d' ' reference.dat <(cut -d' ' -f2,3 mpm.dat)
+  echo "# time  u_reference  v_reference  u_MPM  v_MPM  u_PS_MPM  v_PS_MPM  (top of the column; prm/B6-soil-column-large-reference-1d.prm, prm/B6-soil-column-2d-large.prm, prm/B6-soil-column-2d-large-powell-sabin.prm)"
+  paste -d' ' reference.dat <(cut -d' ' -f2,3 mpm.dat) <(cut -d' ' -f2,3 powell-sabin.dat)
 } > "$data/B6-large.dat"
+
+echo "B6, large deformation, thesis Chapter 5: Powell-Sabin MPM with nearly empty cells"
+prm=B6-soil-column-large-powell-sabin-remedies.prm
+for remedy in "partially-lumped:" "lumped:set Mass matrix = lumped" \
+              "deactivated:set Mass matrix = consistent
+set Deactivation threshold = 1e-2" "deactivated-1e-3:set Mass matrix = consistent
+set Deactivation threshold = 1e-3"; do
+  run $prm "${remedy#*:}"
+  track top 1e-4 > "${remedy%%:*}.dat"
+done
+{
+  echo "# time  u_reference  v_reference  then u, v of the top for: partially lumped, lumped, deactivation below 1e-2, below 1e-3  (prm/$prm)"
+  paste -d' ' reference.dat <(cut -d' ' -f2,3 partially-lumped.dat) <(cut -d' ' -f2,3 lumped.dat) \
+    <(cut -d' ' -f2,3 deactivated.dat) <(cut -d' ' -f2,3 deactivated-1e-3.dat)
+} > "$data/B6-remedies.dat"
+# The consistent mass matrix: the run stops; keep where.
+run $prm "set Mass matrix = consistent" 2> consistent.txt || true
+tr -s ' \n' ' ' < consistent.txt | grep -o 'Stopped in time step [0-9]* (t = [0-9.e-]* to [0-9.e-]*)' \
+  > "$data/B6-remedies-consistent.txt"
 
 echo "B3: sigma11 along X2 = 0.0664 at T = 3.5e-3"
 : > "$data/B3-errors.dat"

@@ -187,8 +187,10 @@ namespace MpmOtm
     stop_if_any_rank_failed(system.lumped_mass.get_mpi_communicator(),
                             problem,
                             "The computation became unstable: ",
-                            "Reduce Time/Time step or use a lumped mass "
-                            "matrix.");
+                            "Reduce Time/Time step, or if cells at the "
+                            "material's edge were nearly empty, use Mass "
+                            "matrix = lumped or partially lumped (manual, "
+                            "'Nearly empty cells').");
   }
 
 

@@ -5,6 +5,8 @@
 #include <mpm_otm/grid_system/consistent_mass_matrix.h>
 
 #include <algorithm>
+#include <iomanip>
+#include <sstream>
 
 
 namespace MpmOtm
@@ -318,8 +320,43 @@ namespace MpmOtm
                                    VectorType        &solution,
                                    const unsigned int component) const
   {
-    const std::vector<unsigned int> excluded =
-      system.excluded_functions(component);
+    solve_without(system,
+                  shape_data,
+                  right_hand_side,
+                  solution,
+                  system.excluded_functions(component));
+  }
+
+
+
+  template <int dim>
+  void
+  ConsistentMassMatrix<dim>::multiply(
+    const NodalSystem<dim>          &system,
+    const ParticleShapeData<dim>    &shape_data,
+    const VectorType                &vector,
+    VectorType                      &product,
+    const std::vector<unsigned int> &excluded) const
+  {
+    if (use_matrix)
+      SparseMassOperator<dim>(row_offsets, columns, entries, excluded)
+        .vmult(product, vector);
+    else
+      ParticleMassOperator<dim>(shape_data, system.particle_mass, excluded)
+        .vmult(product, vector);
+  }
+
+
+
+  template <int dim>
+  void
+  ConsistentMassMatrix<dim>::solve_without(
+    const NodalSystem<dim>          &system,
+    const ParticleShapeData<dim>    &shape_data,
+    const VectorType                &right_hand_side,
+    VectorType                      &solution,
+    const std::vector<unsigned int> &excluded) const
+  {
     VectorType rhs(right_hand_side);
     rhs.zero_out_ghost_values();
     for (const unsigned int i : excluded)
@@ -359,15 +396,19 @@ namespace MpmOtm
       }
     catch (const SolverControl::NoConvergence &failure)
       {
-        AssertThrow(false,
-                    ExcMessage(
-                      "The consistent mass matrix could not be solved (" +
-                      std::to_string(failure.last_step) +
-                      " CG iterations, residual " +
-                      std::to_string(failure.last_residual) +
-                      "): it is nearly singular, which happens when a "
-                      "shape function is supported by almost no material "
-                      "(thesis Ch. 5). Use 'set Mass matrix = lumped'."));
+        std::ostringstream message;
+        message << "The consistent mass matrix could not be solved: "
+                << failure.last_step << " CG iterations left the residual at "
+                << std::scientific << std::setprecision(2)
+                << failure.last_residual / norm
+                << " of the right-hand side (tolerance 1e-13). The matrix is "
+                   "nearly singular or badly conditioned. Two causes are "
+                   "known: a shape function supported by almost no material "
+                   "(thesis Ch. 5), and shape functions whose supports overlap "
+                   "widely, as max-ent functions with a large 'Max-ent "
+                   "support factor' in 2D and 3D. Use 'set Mass matrix = "
+                   "lumped', or a smaller 'Max-ent support factor'.";
+        AssertThrow(false, ExcMessage(message.str()));
       }
   }
 

@@ -11,14 +11,26 @@ namespace MpmOtm
   void
   NodalSystem<dim>::setup(
     const ShapeFunctions<dim>               &shape_functions,
-    const std::vector<FixedComponents<dim>> &fixed_components)
+    const std::vector<FixedComponents<dim>> &fixed_components,
+    const double                             deactivation_threshold,
+    const bool                               find_material_boundary)
   {
+    this->shape_functions        = &shape_functions;
+    this->deactivation_threshold = deactivation_threshold;
+    track_material_boundary      = find_material_boundary;
     index_partition = std::make_shared<Utilities::MPI::Partitioner>(
       shape_functions.locally_owned_functions(),
       shape_functions.locally_relevant_functions(),
       shape_functions.dof_handler().get_triangulation().get_communicator());
 
     lumped_mass.reinit(index_partition);
+    if (deactivation_threshold > 0.)
+      diagonal_mass.reinit(index_partition);
+    if (track_material_boundary)
+      {
+        filled_cells.reinit(index_partition);
+        empty_cells.reinit(index_partition);
+      }
     for (unsigned int c = 0; c < dim; ++c)
       {
         momentum[c].reinit(index_partition);
@@ -128,6 +140,51 @@ namespace MpmOtm
         particle_mass[k] = m;
         ++k;
       }
+
+    if (deactivation_threshold > 0.)
+      {
+        diagonal_mass          = 0.;
+        double *const diagonal = diagonal_mass.get_values();
+        for (k = 0; k < shape_data.n_particles(); ++k)
+          for (unsigned int e = shape_data.offsets[k];
+               e < shape_data.offsets[k + 1];
+               ++e)
+            diagonal[shape_data.indices[e]] +=
+              particle_mass[k] * shape_data.values[e] * shape_data.values[e];
+      }
+    if (track_material_boundary)
+      find_material_boundary(material_points);
+  }
+
+
+
+  template <int dim>
+  void
+  NodalSystem<dim>::find_material_boundary(
+    const MaterialPoints<dim> &material_points)
+  {
+    filled_cells          = 0.;
+    empty_cells           = 0.;
+    const auto &particles = material_points.particle_handler();
+    for (const auto &cell : shape_functions->dof_handler()
+                              .get_triangulation()
+                              .active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          VectorType &count = particles.n_particles_in_cell(cell) > 0 ?
+                                filled_cells :
+                                empty_cells;
+          shape_functions->functions_on_cell(cell, cell_functions);
+          for (const auto global : cell_functions)
+            count(global) += 1.;
+        }
+    filled_cells.compress(VectorOperation::add);
+    empty_cells.compress(VectorOperation::add);
+    material_boundary.clear();
+    for (unsigned int i = 0; i < filled_cells.locally_owned_size(); ++i)
+      if (filled_cells.local_element(i) > 0. &&
+          empty_cells.local_element(i) > 0.)
+        material_boundary.push_back(i);
   }
 
 
@@ -160,6 +217,16 @@ namespace MpmOtm
     for (unsigned int i = 0; i < lumped_mass.locally_owned_size(); ++i)
       if (!(lumped_mass.local_element(i) > 0.))
         empty.push_back(i);
+
+    deactivated.clear();
+    if (deactivation_threshold > 0.)
+      {
+        diagonal_mass.compress(VectorOperation::add);
+        for (unsigned int i = 0; i < diagonal_mass.locally_owned_size(); ++i)
+          if (lumped_mass.local_element(i) > 0. &&
+              diagonal_mass.local_element(i) < deactivation_threshold)
+            deactivated.push_back(i);
+      }
   }
 
 
@@ -201,13 +268,39 @@ namespace MpmOtm
   std::vector<unsigned int>
   NodalSystem<dim>::excluded_functions(const unsigned int component) const
   {
-    std::vector<unsigned int> result;
+    std::vector<unsigned int> fixed_or_empty;
     std::set_union(fixed[component].begin(),
                    fixed[component].end(),
                    empty.begin(),
                    empty.end(),
+                   std::back_inserter(fixed_or_empty));
+    std::vector<unsigned int> result;
+    std::set_union(fixed_or_empty.begin(),
+                   fixed_or_empty.end(),
+                   deactivated.begin(),
+                   deactivated.end(),
                    std::back_inserter(result));
     return result;
+  }
+
+
+
+  template <int dim>
+  const std::vector<unsigned int> &
+  NodalSystem<dim>::deactivated_functions() const
+  {
+    return deactivated;
+  }
+
+
+
+  template <int dim>
+  const std::vector<unsigned int> &
+  NodalSystem<dim>::material_boundary_functions() const
+  {
+    Assert(track_material_boundary,
+           ExcMessage("setup() did not ask for the material boundary."));
+    return material_boundary;
   }
 
 

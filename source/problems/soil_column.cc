@@ -1,4 +1,5 @@
 #include <deal.II/base/numbers.h>
+#include <deal.II/base/utilities.h>
 
 #include <mpm_otm/base/plugins.h>
 #include <mpm_otm/materials/material.h>
@@ -22,6 +23,13 @@ namespace MpmOtm
                       "400",
                       Patterns::Integer(1),
                       "Number of terms of the exact series solution.");
+    prm.declare_entry("Column height",
+                      "0",
+                      Patterns::Double(0.),
+                      "Height H of the column, from the grid's bottom; the "
+                      "grid above it stays empty (partial lumping needs "
+                      "empty cells above the free top, thesis Sect. 5.4). "
+                      "0: the grid's height.");
     prm.leave_subsection();
   }
 
@@ -32,8 +40,9 @@ namespace MpmOtm
   SoilColumn<dim>::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Soil column");
-    gravity = prm.get_double("Gravity");
-    n_terms = prm.get_integer("Series terms");
+    gravity          = prm.get_double("Gravity");
+    n_terms          = prm.get_integer("Series terms");
+    requested_height = prm.get_double("Column height");
     prm.leave_subsection();
   }
 
@@ -45,11 +54,30 @@ namespace MpmOtm
                               const BoundingBox<dim> &box)
   {
     Problem<dim>::initialize(material, box);
-    height  = box.side_length(dim - 1);
+    const double grid_height = box.side_length(dim - 1);
+    AssertThrow(requested_height <= grid_height * (1. + 1e-12),
+                ExcMessage("Soil column/Column height = " +
+                           Utilities::to_string(requested_height) +
+                           " exceeds the grid's height " +
+                           Utilities::to_string(grid_height) +
+                           ": set it to at most that, or 0 for the grid's "
+                           "height, or raise Mesh/Upper corner."));
+    height  = requested_height > 0. ? requested_height : grid_height;
     bottom  = box.get_boundary_points().first[dim - 1];
     c       = material.wave_speed();
     rho     = material.density();
     lateral = material.lambda() / (material.lambda() + 2. * material.mu());
+  }
+
+
+
+  template <int dim>
+  BoundingBox<dim>
+  SoilColumn<dim>::material_region() const
+  {
+    auto corners            = this->grid_box.get_boundary_points();
+    corners.second[dim - 1] = bottom + height;
+    return BoundingBox<dim>(corners);
   }
 
 

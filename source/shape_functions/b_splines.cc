@@ -153,7 +153,7 @@ namespace MpmOtm
             knots[d].begin() - 1;
         if (cell->is_locally_owned())
           {
-            cell_functions(cell, indices);
+            functions_on_cell(cell, indices);
             relevant_indices.insert(relevant_indices.end(),
                                     indices.begin(),
                                     indices.end());
@@ -288,7 +288,7 @@ namespace MpmOtm
 
   template <int dim>
   void
-  BSplines<dim>::cell_functions(
+  BSplines<dim>::functions_on_cell(
     const typename Triangulation<dim>::active_cell_iterator &cell,
     std::vector<types::global_dof_index>                    &indices) const
   {
@@ -419,7 +419,7 @@ namespace MpmOtm
         if (cell != current_cell)
           {
             current_cell = cell;
-            cell_functions(cell, global_indices);
+            functions_on_cell(cell, global_indices);
             for (unsigned int i = 0; i < n_local; ++i)
               local_indices[i] = partitioner.global_to_local(global_indices[i]);
           }
@@ -511,7 +511,7 @@ namespace MpmOtm
     for (const auto &cell : dofs.active_cell_iterators())
       if (cell->is_locally_owned())
         {
-          cell_functions(cell, functions);
+          functions_on_cell(cell, functions);
           cell->get_dof_indices(cell_dofs);
           const auto &first = first_function(cell);
           // beta_b = sum_a prod_d C^d[a_d][b_d] c_a.

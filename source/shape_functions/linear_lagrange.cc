@@ -62,6 +62,22 @@ namespace MpmOtm
 
 
   template <int dim>
+  void
+  LinearLagrange<dim>::functions_on_cell(
+    const typename Triangulation<dim>::active_cell_iterator &cell,
+    std::vector<types::global_dof_index>                    &functions) const
+  {
+    functions.resize(dofs.get_fe().n_dofs_per_cell());
+    typename DoFHandler<dim>::active_cell_iterator(&cell->get_triangulation(),
+                                                   cell->level(),
+                                                   cell->index(),
+                                                   &dofs)
+      ->get_dof_indices(functions);
+  }
+
+
+
+  template <int dim>
   types::global_dof_index
   LinearLagrange<dim>::vertex_function(
     const typename Triangulation<dim>::active_cell_iterator &cell,

@@ -524,6 +524,21 @@ namespace MpmOtm
 
 
   template <int dim>
+  void
+  MaxEnt<dim>::functions_on_cell(
+    const typename Triangulation<dim>::active_cell_iterator &cell,
+    std::vector<types::global_dof_index>                    &functions) const
+  {
+    // The cell's candidates: the nodes whose support meets its bounding box
+    // (for a simplex a few more than those that reach the cell itself).
+    const unsigned int c = cell->active_cell_index();
+    functions.assign(cell_nodes.begin() + cell_node_offsets[c],
+                     cell_nodes.begin() + cell_node_offsets[c + 1]);
+  }
+
+
+
+  template <int dim>
   types::global_dof_index
   MaxEnt<dim>::vertex_function(
     const typename Triangulation<dim>::active_cell_iterator &cell,

@@ -726,6 +726,19 @@ namespace MpmOtm
 
 
   template <int dim>
+  void
+  PowellSabin<dim>::functions_on_cell(
+    const typename Triangulation<dim>::active_cell_iterator &cell,
+    std::vector<types::global_dof_index>                    &functions) const
+  {
+    const auto &cell_functions_of_cell = cell_functions(cell);
+    functions.assign(cell_functions_of_cell.begin(),
+                     cell_functions_of_cell.end());
+  }
+
+
+
+  template <int dim>
   types::global_dof_index
   PowellSabin<dim>::vertex_function(
     const typename Triangulation<dim>::active_cell_iterator &,

@@ -40,6 +40,30 @@ namespace MpmOtm
           VectorType                   &solution,
           const unsigned int            component) const override;
 
+  protected:
+    /**
+     * Solve M @p solution = @p right_hand_side with the coefficients
+     * @p excluded (sorted local indices) set to zero, by CG; stops the run
+     * if CG does not converge.
+     */
+    void
+    solve_without(const NodalSystem<dim>          &system,
+                  const ParticleShapeData<dim>    &shape_data,
+                  const VectorType                &right_hand_side,
+                  VectorType                      &solution,
+                  const std::vector<unsigned int> &excluded) const;
+
+    /**
+     * @p product = M @p vector, with the identity on the coefficients
+     * @p excluded (which are zero in @p vector).
+     */
+    void
+    multiply(const NodalSystem<dim>          &system,
+             const ParticleShapeData<dim>    &shape_data,
+             const VectorType                &vector,
+             VectorType                      &product,
+             const std::vector<unsigned int> &excluded) const;
+
   private:
     /**
      * The compressed rows of the matrix on @p n_rows locally stored

@@ -8,9 +8,9 @@ namespace MpmOtm
   /**
    * How the mass matrix M_ij = sum_p m_p phi_i(x_p) phi_j(x_p) (journal
    * Eq. 19) is used to turn nodal forces into accelerations and momenta into
-   * velocities: consistent, lumped (row sums, journal Eq. 17), or later
-   * partially lumped (thesis Ch. 5). Coefficients that NodalSystem excludes
-   * get zero.
+   * velocities: consistent, lumped (row sums, journal Eq. 17), or partially
+   * lumped (thesis Sect. 5.4). Coefficients that NodalSystem excludes get
+   * zero.
    */
   template <int dim>
   class MassMatrix
@@ -19,6 +19,15 @@ namespace MpmOtm
     using VectorType = typename NodalSystem<dim>::VectorType;
 
     virtual ~MassMatrix() = default;
+
+    /**
+     * Whether the solves need NodalSystem::material_boundary_functions().
+     */
+    virtual bool
+    needs_material_boundary() const
+    {
+      return false;
+    }
 
     /**
      * Prepare the solves of a step, after the system has been assembled from

@@ -25,8 +25,12 @@ namespace MpmOtm
    * forces, accelerations and velocities, one per component, assembled from
    * the material points (journal Alg. 1, step 4, Eqs. 19-21; thesis
    * Eqs. 2.27-2.30) and the lists of coefficients that are left out of the
-   * solves: those fixed by a Dirichlet condition (per component) and those
-   * whose support holds no material point (no NaN from empty cells).
+   * solves: those fixed by a Dirichlet condition (per component), those
+   * whose support holds no material point (no NaN from empty cells) and,
+   * if asked for, those deactivated because their diagonal mass
+   * M_ii = sum_p m_p phi_i(x_p)^2 is below a threshold (thesis Sect. 5.2).
+   * On request it also lists the functions at the edge of the material,
+   * which partial lumping needs (thesis Sect. 5.4).
    * Vectors are distributed with ghost entries for every function that a
    * locally owned particle touches.
    */
@@ -37,11 +41,17 @@ namespace MpmOtm
     using VectorType = LinearAlgebra::distributed::Vector<double>;
 
     /**
-     * Build the partition and the Dirichlet lists.
+     * Build the partition and the Dirichlet lists. Functions with
+     * M_ii < @p deactivation_threshold are deactivated every step (0: none);
+     * if @p find_material_boundary, every step lists the functions that do
+     * not vanish on a cell with material points and on one without
+     * (material_boundary_functions()).
      */
     void
     setup(const ShapeFunctions<dim>               &shape_functions,
-          const std::vector<FixedComponents<dim>> &fixed_components);
+          const std::vector<FixedComponents<dim>> &fixed_components,
+          const double                             deactivation_threshold = 0.,
+          const bool find_material_boundary = false);
 
     /**
      * The partition of the function indices over the ranks.
@@ -82,10 +92,25 @@ namespace MpmOtm
 
     /**
      * Locally owned functions left out of the solve for @p component:
-     * fixed by a Dirichlet condition or without material.
+     * fixed by a Dirichlet condition, without material or deactivated.
      */
     std::vector<unsigned int>
     excluded_functions(const unsigned int component) const;
+
+    /**
+     * Locally owned functions (local indices, sorted) deactivated in this
+     * step: material in their support, but M_ii below the threshold.
+     */
+    const std::vector<unsigned int> &
+    deactivated_functions() const;
+
+    /**
+     * Locally owned functions (local indices, sorted) that do not vanish on
+     * a locally owned cell with material points and on one without, found
+     * in this step's assemble() (setup() must have asked for them).
+     */
+    const std::vector<unsigned int> &
+    material_boundary_functions() const;
 
     /// Lumped nodal masses.
     VectorType lumped_mass;
@@ -101,9 +126,26 @@ namespace MpmOtm
     std::vector<double> particle_mass;
 
   private:
+    /**
+     * List the functions at the edge of the material from the cells'
+     * occupation by @p material_points.
+     */
+    void
+    find_material_boundary(const MaterialPoints<dim> &material_points);
+
+    const ShapeFunctions<dim>                   *shape_functions = nullptr;
     std::shared_ptr<Utilities::MPI::Partitioner> index_partition;
     std::array<std::vector<unsigned int>, dim>   fixed;
     std::vector<unsigned int>                    empty;
+    double                                       deactivation_threshold = 0.;
+    /// Diagonal of the consistent mass matrix (only with a threshold).
+    VectorType                diagonal_mass;
+    std::vector<unsigned int> deactivated;
+    bool                      track_material_boundary = false;
+    /// Cells with and without material next to each function.
+    VectorType                           filled_cells, empty_cells;
+    std::vector<unsigned int>            material_boundary;
+    std::vector<types::global_dof_index> cell_functions;
   };
 } // namespace MpmOtm
 

@@ -29,6 +29,12 @@ namespace MpmOtm
     initialize(const Material<dim>    &material,
                const BoundingBox<dim> &grid_box) override;
 
+    /**
+     * The grid up to the column's height (Soil column/Column height).
+     */
+    BoundingBox<dim>
+    material_region() const override;
+
     Tensor<1, dim>
     initial_velocity(const Point<dim> &X) const override;
 
@@ -53,11 +59,13 @@ namespace MpmOtm
   private:
     double       gravity = 0;
     unsigned int n_terms = 0;
-    double       height  = 0;
-    double       bottom  = 0;
-    double       c       = 0;
-    double       rho     = 0;
-    double       lateral = 0;
+    /// Column height from the parameter file; 0: the grid's height.
+    double requested_height = 0;
+    double height           = 0;
+    double bottom           = 0;
+    double c                = 0;
+    double rho              = 0;
+    double lateral          = 0;
   };
 } // namespace MpmOtm
 

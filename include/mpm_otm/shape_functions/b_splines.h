@@ -88,6 +88,15 @@ namespace MpmOtm
      * Always numbers::invalid_dof_index: the functions belong to knots, not
      * vertices.
      */
+    /**
+     * The (p+1)^dim functions of @p cell, local function
+     * a_0 + (p+1) (a_1 + (p+1) a_2) first.
+     */
+    void
+    functions_on_cell(
+      const typename Triangulation<dim>::active_cell_iterator &cell,
+      std::vector<types::global_dof_index> &functions) const override;
+
     types::global_dof_index
     vertex_function(
       const typename Triangulation<dim>::active_cell_iterator &cell,
@@ -142,18 +151,9 @@ namespace MpmOtm
       const typename Triangulation<dim>::active_cell_iterator &cell) const;
 
     /**
-     * Global indices of the (p+1)^dim functions that do not vanish on
-     * @p cell, local function a_0 + (p+1) (a_1 + (p+1) a_2) first.
-     */
-    void
-    cell_functions(
-      const typename Triangulation<dim>::active_cell_iterator &cell,
-      std::vector<types::global_dof_index>                    &indices) const;
-
-    /**
      * Values and gradients (real coordinates) of the (p+1)^dim functions of
      * @p cell at the reference point @p xi, in the order of
-     * cell_functions().
+     * functions_on_cell().
      */
     void
     cell_values(const typename Triangulation<dim>::active_cell_iterator &cell,

@@ -81,6 +81,11 @@ namespace MpmOtm
     bool
     is_linearly_complete() const override;
 
+    void
+    functions_on_cell(
+      const typename Triangulation<dim>::active_cell_iterator &cell,
+      std::vector<types::global_dof_index> &functions) const override;
+
     types::global_dof_index
     vertex_function(
       const typename Triangulation<dim>::active_cell_iterator &cell,

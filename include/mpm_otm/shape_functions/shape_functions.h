@@ -97,6 +97,17 @@ namespace MpmOtm
     is_linearly_complete() const = 0;
 
     /**
+     * Global indices of the functions that do not vanish everywhere on
+     * @p cell (a locally owned or ghost cell); with or without material.
+     * Partial lumping (thesis Sect. 5.4) finds the functions at the edge of
+     * the material with it.
+     */
+    virtual void
+    functions_on_cell(
+      const typename Triangulation<dim>::active_cell_iterator &cell,
+      std::vector<types::global_dof_index> &functions) const = 0;
+
+    /**
      * The function that belongs to vertex @p v of @p cell, for families with
      * one function per vertex that moves with it (OTM and the unified
      * approach on a moving grid); numbers::invalid_dof_index otherwise.

@@ -134,6 +134,8 @@ namespace MpmOtm
     double end_time     = 0;
     double time_step    = 0;
     double current_time = 0;
+    /// Functions with a smaller diagonal mass are deactivated (thesis 5.2).
+    double deactivation_threshold = 0;
 
     std::unique_ptr<BackgroundGrid<dim>> grid;
     std::unique_ptr<MaterialPoints<dim>> points;
