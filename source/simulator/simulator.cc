@@ -328,6 +328,7 @@ namespace MpmOtm
                        problem_description->has_exact_solution(),
                        problem_description->has_exact_stress(),
                        communicator);
+    output->write_powell_sabin_basis(*shape_functions);
     current_time = 0;
 
     pcout << "mpm-otm: " << dim << "D, "

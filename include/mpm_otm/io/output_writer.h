@@ -83,6 +83,17 @@ namespace MpmOtm
     const std::string &
     directory() const;
 
+    /**
+     * If Output/Powell-Sabin basis at names a point: write the three
+     * Powell-Sabin functions of the vertex nearest to it on the
+     * Powell-Sabin refinement of its cells and their neighbours
+     * (powell-sabin-basis.vtu), each of the six sub-triangles of a cell
+     * divided into 36 triangles. Stops unless @p shape_functions are
+     * Powell-Sabin splines.
+     */
+    void
+    write_powell_sabin_basis(const ShapeFunctions<dim> &shape_functions) const;
+
   private:
     void
     write_particle_vtu(const unsigned int         step,
@@ -117,10 +128,12 @@ namespace MpmOtm
                      const Statistics<dim> &statistics);
 
     std::string  output_directory;
-    unsigned int interval         = 0;
-    bool         write_csv        = false;
-    bool         write_vtu        = true;
-    MPI_Comm     mpi_communicator = MPI_COMM_WORLD;
+    unsigned int interval  = 0;
+    bool         write_csv = false;
+    bool         write_vtu = true;
+    /// Where to show the Powell-Sabin functions (empty: nowhere).
+    std::vector<double> powell_sabin_basis_point;
+    MPI_Comm            mpi_communicator = MPI_COMM_WORLD;
     std::vector<std::pair<double, std::string>> particle_records;
     std::vector<std::pair<double, std::string>> grid_records;
   };

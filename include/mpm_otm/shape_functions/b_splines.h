@@ -85,10 +85,6 @@ namespace MpmOtm
     is_linearly_complete() const override;
 
     /**
-     * Always numbers::invalid_dof_index: the functions belong to knots, not
-     * vertices.
-     */
-    /**
      * The (p+1)^dim functions of @p cell, local function
      * a_0 + (p+1) (a_1 + (p+1) a_2) first.
      */
@@ -97,6 +93,10 @@ namespace MpmOtm
       const typename Triangulation<dim>::active_cell_iterator &cell,
       std::vector<types::global_dof_index> &functions) const override;
 
+    /**
+     * Always numbers::invalid_dof_index: the functions belong to knots, not
+     * vertices.
+     */
     types::global_dof_index
     vertex_function(
       const typename Triangulation<dim>::active_cell_iterator &cell,

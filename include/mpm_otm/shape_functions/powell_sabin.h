@@ -114,15 +114,15 @@ namespace MpmOtm
     bool
     is_linearly_complete() const override;
 
-    /**
-     * numbers::invalid_dof_index: three functions per vertex, none of which
-     * moves with it.
-     */
     void
     functions_on_cell(
       const typename Triangulation<dim>::active_cell_iterator &cell,
       std::vector<types::global_dof_index> &functions) const override;
 
+    /**
+     * numbers::invalid_dof_index: three functions per vertex, none of which
+     * moves with it.
+     */
     types::global_dof_index
     vertex_function(
       const typename Triangulation<dim>::active_cell_iterator &cell,
