@@ -660,20 +660,28 @@ namespace MpmOtm
 
 
   template <int dim>
-  IndexSet
-  PowellSabin<dim>::boundary_functions(const types::boundary_id) const
+  void
+  PowellSabin<dim>::for_each_side_control_point(
+    const types::boundary_id,
+    const std::function<void(const types::global_dof_index,
+                             const Point<dim> &,
+                             const Point<dim> &,
+                             const Tensor<1, dim> &)> &) const
   {
     AssertThrow(false, ExcNotImplemented());
-    return IndexSet();
   }
 
 
 
   template <>
-  IndexSet
-  PowellSabin<2>::boundary_functions(const types::boundary_id boundary_id) const
+  void
+  PowellSabin<2>::for_each_side_control_point(
+    const types::boundary_id                         boundary_id,
+    const std::function<void(const types::global_dof_index,
+                             const Point<2> &,
+                             const Point<2> &,
+                             const Tensor<1, 2> &)> &action) const
   {
-    IndexSet functions(n_functions());
     for (const auto &cell : vertex_dofs.active_cell_iterators())
       if (!cell->is_artificial())
         for (const auto f : cell->face_indices())
@@ -695,7 +703,10 @@ namespace MpmOtm
                                 control_triangles[v][q] - face->vertex(i))) <=
                         1e-10 * face->measure())
                       {
-                        functions.add_index(3 * dof + q);
+                        action(3 * dof + q,
+                               face->vertex(i),
+                               control_triangles[v][q],
+                               tangent);
                         ++on_line;
                       }
                   AssertThrow(
@@ -706,12 +717,63 @@ namespace MpmOtm
                                Utilities::to_string(face->vertex(i)[1]) +
                                " has fewer than two points on boundary " +
                                Utilities::to_string(boundary_id) +
-                               ": a Dirichlet condition there needs general "
-                               "constraints, which are not implemented."));
+                               ": the value and tangential derivative there "
+                               "cannot be imposed through its coefficients."));
                 }
             }
+  }
+
+
+
+  template <int dim>
+  IndexSet
+  PowellSabin<dim>::boundary_functions(const types::boundary_id) const
+  {
+    AssertThrow(false, ExcNotImplemented());
+    return IndexSet();
+  }
+
+
+
+  template <>
+  IndexSet
+  PowellSabin<2>::boundary_functions(const types::boundary_id boundary_id) const
+  {
+    IndexSet functions(n_functions());
+    for_each_side_control_point(boundary_id,
+                                [&](const types::global_dof_index function,
+                                    const Point<2> &,
+                                    const Point<2> &,
+                                    const Tensor<1, 2> &) {
+                                  functions.add_index(function);
+                                });
     functions.compress();
     return functions;
+  }
+
+
+
+  template <int dim>
+  void
+  PowellSabin<dim>::make_boundary_constraints(
+    const types::boundary_id   boundary_id,
+    const Function<dim>       &g,
+    AffineConstraints<double> &constraints) const
+  {
+    for_each_side_control_point(boundary_id,
+                                [&](const types::global_dof_index function,
+                                    const Point<dim>             &vertex,
+                                    const Point<dim>             &control_point,
+                                    const Tensor<1, dim>         &tangent) {
+                                  if (constraints.is_constrained(function))
+                                    return;
+                                  constraints.add_line(function);
+                                  constraints.set_inhomogeneity(
+                                    function,
+                                    g.value(vertex) +
+                                      (g.gradient(vertex) * tangent) *
+                                        ((control_point - vertex) * tangent));
+                                });
   }
 
 

@@ -15,9 +15,12 @@
 //   and every sub-triangle edge inside a cell (the two neighbouring
 //   quadratics evaluated on it);
 // - every control triangle contains its vertex's Powell-Sabin points;
-// - boundary_functions(): two functions per vertex of a side, and with
-//   their coefficients zero (all others random) the field and its
-//   tangential derivative vanish along the whole side;
+// - Dirichlet conditions (thesis Sect. 3.5.4): make_boundary_constraints()
+//   constrains exactly the functions of boundary_functions(), two per
+//   vertex of a side; with the constrained coefficients set to their
+//   inhomogeneities for a quadratic g (all others random) the field and its
+//   tangential derivative equal g's along the whole side (g = 0 is the
+//   homogeneous case the simulator uses);
 // - the control triangle of the centre vertex of the 3 x 3 grid and the
 //   values of its functions at (0.4, 0.45) equal those of an independent
 //   implementation of the same rule (a Python prototype written when this
@@ -44,6 +47,26 @@ using namespace MpmOtm;
 using namespace MpmOtmTests;
 
 using Cell = Triangulation<2>::active_cell_iterator;
+
+/**
+ * Dirichlet data g = 1 + 2x - y + x^2 + 3xy - 2y^2 with its gradient.
+ */
+class QuadraticBoundaryValues : public Function<2>
+{
+public:
+  double
+  value(const Point<2> &x, const unsigned int = 0) const override
+  {
+    return 1 + 2 * x[0] - x[1] + x[0] * x[0] + 3 * x[0] * x[1] -
+           2 * x[1] * x[1];
+  }
+
+  Tensor<1, 2>
+  gradient(const Point<2> &x, const unsigned int = 0) const override
+  {
+    return Tensor<1, 2>({2 + 2 * x[0] + 3 * x[1], -1 + 3 * x[0] - 4 * x[1]});
+  }
+};
 
 /**
  * n x n vertices on the unit square, squares cut along the diagonal from
@@ -397,17 +420,31 @@ test_grid(const unsigned int n, const bool perturbed)
           }
       }
 
-  // Dirichlet sets: zero coefficients of boundary_functions(id), random
-  // others; field and tangential derivative along the side vanish.
-  double boundary_field = 0;
-  bool   two_per_vertex = true;
+  // Dirichlet conditions u = g for a quadratic g, side by side: the
+  // constrained coefficients are those of boundary_functions(id) (two per
+  // vertex), the others random; along the side the field and its tangential
+  // derivative must be g's.
+  const QuadraticBoundaryValues g;
+  double                        boundary_field = 0;
+  bool                          two_per_vertex = true;
   for (types::boundary_id id = 0; id < 4; ++id)
     {
-      const IndexSet      fixed = basis.boundary_functions(id);
+      const IndexSet            fixed = basis.boundary_functions(id);
+      AffineConstraints<double> constraints;
+      basis.make_boundary_constraints(id, g, constraints);
+      constraints.close();
       std::vector<double> coefficients(basis.n_functions());
+      bool same_set = constraints.n_constraints() == fixed.n_elements();
       for (unsigned int i = 0; i < coefficients.size(); ++i)
-        coefficients[i] = fixed.is_element(i) ? 0. : uniform(random) - 0.5;
-      two_per_vertex = two_per_vertex && (fixed.n_elements() == 2 * n);
+        {
+          same_set =
+            same_set && (constraints.is_constrained(i) == fixed.is_element(i));
+          coefficients[i] = constraints.is_constrained(i) ?
+                              constraints.get_inhomogeneity(i) :
+                              uniform(random) - 0.5;
+        }
+      two_per_vertex =
+        two_per_vertex && same_set && (fixed.n_elements() == 2 * n);
       for (const auto &cell : tria.active_cell_iterators())
         for (const auto f : cell->face_indices())
           if (cell->face(f)->at_boundary() &&
@@ -433,8 +470,10 @@ test_grid(const unsigned int n, const bool perturbed)
                       value += c * values[i];
                       derivative += c * (gradients[i] * tangent);
                     }
-                  boundary_field = std::max(
-                    {boundary_field, std::abs(value), std::abs(derivative)});
+                  boundary_field =
+                    std::max({boundary_field,
+                              std::abs(value - g.value(x)),
+                              std::abs(derivative - g.gradient(x) * tangent)});
                 }
             }
     }
@@ -458,14 +497,17 @@ test_grid(const unsigned int n, const bool perturbed)
   check(contained, name + ": Powell-Sabin point outside its control triangle");
   check(two_per_vertex, name + ": not two boundary functions per vertex");
   check(boundary_field <= 1e-12,
-        name + ": boundary field not zero: " + rounded(boundary_field));
+        name +
+          ": boundary field or its tangential derivative differs from "
+          "the Dirichlet data by " +
+          rounded(boundary_field));
   deallog << name << ": " << deviations.n_points
           << " points: min phi >= -1e-14, partition of unity, quadratic "
              "reproduction to 1e-12, finite differences; C1 at "
           << n_macro_points << " macro-edge and " << n_sub_points
           << " sub-edge points (jumps <= 1e-10); control triangles contain "
-             "their points; boundary functions: 2 per vertex, field and "
-             "tangential derivative zero on the side"
+             "their points; Dirichlet constraints: 2 per vertex, field and "
+             "tangential derivative equal to the quadratic data on the side"
           << std::endl;
 
   if (n == 3 && !perturbed)

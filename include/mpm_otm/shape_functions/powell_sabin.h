@@ -1,13 +1,16 @@
 #ifndef mpm_otm_shape_functions_powell_sabin_h
 #define mpm_otm_shape_functions_powell_sabin_h
 
+#include <deal.II/base/function.h>
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 #include <deal.II/fe/fe.h>
+#include <deal.II/lac/affine_constraints.h>
 
 #include <mpm_otm/shape_functions/shape_functions.h>
 
 #include <array>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -108,6 +111,25 @@ namespace MpmOtm
     boundary_functions(const types::boundary_id boundary_id) const override;
 
     /**
+     * Add to @p constraints the Dirichlet condition u = @p g on boundary
+     * @p boundary_id (a straight side), imposed through the value and the
+     * tangential derivative at its vertices (thesis Sect. 3.5.4): the
+     * coefficient of each function of boundary_functions() is the side's
+     * linear Taylor polynomial of g at the vertex V at the function's
+     * control point Q, g(V) + (grad g(V) . t) ((Q - V) . t) with t the
+     * side's tangent; the third function's control point is off the side,
+     * where its barycentric coordinate vanishes. Along the side the field is
+     * then the quadratic C1 spline interpolating g and its tangential
+     * derivative at the vertices (g itself if g is quadratic). @p g must
+     * implement gradient(). Lines already constrained (a corner shared
+     * with another side) are kept.
+     */
+    void
+    make_boundary_constraints(const types::boundary_id   boundary_id,
+                              const Function<dim>       &g,
+                              AffineConstraints<double> &constraints) const;
+
+    /**
      * True: the functions reproduce linear (even quadratic) fields, with the
      * control points as coefficients of x (thesis Eqs. 3.41-3.46).
      */
@@ -183,6 +205,19 @@ namespace MpmOtm
                 const unsigned int edge) const;
 
   private:
+    /**
+     * Call @p action(function, V, Q, t) for every function of every vertex
+     * V of boundary @p boundary_id whose control point Q lies on the side
+     * (tangent t) through V; stops if a vertex has fewer than two.
+     */
+    void
+    for_each_side_control_point(
+      const types::boundary_id                           boundary_id,
+      const std::function<void(const types::global_dof_index,
+                               const Point<dim> &,
+                               const Point<dim> &,
+                               const Tensor<1, dim> &)> &action) const;
+
     /**
      * What a cell needs to evaluate its functions: incentre barycentric
      * coordinates a_k, split weights rho_k (R_k = rho_k V_k + (1 - rho_k)
