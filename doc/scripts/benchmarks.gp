@@ -28,6 +28,9 @@ plot "data/B2-convergence.dat" using 1:2 with linespoints lw 2 pt 7 title "mpm-o
      "data/B2-convergence.dat" using 1:3 with linespoints lw 2 pt 5 title "mpm-otm, OTM-P1", \
      "data/B2-convergence.dat" using 1:4 with linespoints lw 2 pt 9 title "mpm-otm, BSMPM p = 2", \
      "data/B2-convergence.dat" using 1:5 with linespoints lw 2 pt 4 title "mpm-otm, unified p = 2", \
+     "data/B2-convergence.dat" using 1:6 with linespoints lw 2 pt 11 title "mpm-otm, MPM-maxent d_{max} = 2 (lumped)", \
+     "data/B2-convergence.dat" using 1:8 with linespoints lw 2 pt 10 dt 3 title "mpm-otm, MPM-maxent d_{max} = 2 (consistent)", \
+     "data/B2-convergence.dat" using 1:7 with linespoints lw 2 pt 13 title "mpm-otm, OTM-maxent d_{max} = 2", \
      [17:257] 5e-4/x**2 with lines dt 2 lc rgb "gray" title "second order"
 
 set output "figures/B5-convergence.png"
@@ -78,7 +81,24 @@ plot "data/B2-profile-otm.dat" using 1:5 with lines lw 3 lc rgb "gray" title "ex
      "data/B2-profile-mpm.dat" using 1:4 with points pt 7 ps 0.5 lc rgb "red" title "mpm-otm, MPM-P1", \
      "data/B2-profile-otm.dat" using 1:4 with points pt 5 ps 0.5 lc rgb "blue" title "mpm-otm, OTM-P1", \
      "data/B2-profile-bsmpm.dat" using 1:4 with points pt 9 ps 0.6 lc rgb "dark-green" title "mpm-otm, BSMPM p = 2", \
-     "data/B2-profile-unified.dat" using 1:4 with points pt 4 ps 0.6 lc rgb "black" title "mpm-otm, unified p = 2"
+     "data/B2-profile-unified.dat" using 1:4 with points pt 4 ps 0.6 lc rgb "black" title "mpm-otm, unified p = 2", \
+     "data/B2-profile-mpm-maxent.dat" using 1:4 with points pt 11 ps 0.6 lc rgb "orange" title "mpm-otm, MPM-maxent d_{max} = 2", \
+     "data/B2-profile-otm-maxent.dat" using 1:4 with points pt 13 ps 0.6 lc rgb "purple" title "mpm-otm, OTM-maxent d_{max} = 2"
+
+set output "figures/B2-stress-free-end.png"
+set title "B2: stress near the free end at T = 0.4, 68 material nodes (journal Fig. 7)"
+set xrange [0.85:1.002]
+set key bottom left
+set arrow from 1. - 1. / 67., graph 0 to 1. - 1. / 67., graph 1 nohead dt 3 lc rgb "black"
+set label "last cell {/Symbol \256}" at 1. - 1. / 67., graph 0.95 right offset -0.5, 0
+plot "data/B2-profile-otm.dat" using 1:5 with lines lw 3 lc rgb "gray" title "exact", \
+     "data/B2-profile-mpm.dat" using 1:4 with linespoints pt 7 ps 0.6 lc rgb "red" title "mpm-otm, MPM-P1", \
+     "data/B2-profile-otm.dat" using 1:4 with linespoints pt 5 ps 0.6 lc rgb "blue" title "mpm-otm, OTM-P1", \
+     "data/B2-profile-mpm-maxent.dat" using 1:4 with linespoints pt 11 ps 0.9 lc rgb "orange" title "mpm-otm, MPM-maxent d_{max} = 2", \
+     "data/B2-profile-otm-maxent.dat" using 1:4 with linespoints pt 13 ps 0.9 lc rgb "purple" title "mpm-otm, OTM-maxent d_{max} = 2"
+unset xrange
+unset arrow
+unset label
 
 set output "figures/B2-displacement.png"
 set title "B2: displacement at T = 0.4 (journal Fig. 7)"
@@ -87,7 +107,9 @@ plot "data/B2-profile-otm.dat" using 1:3 with lines lw 3 lc rgb "gray" title "ex
      "data/B2-profile-mpm.dat" using 1:2 with points pt 7 ps 0.5 lc rgb "red" title "mpm-otm, MPM-P1", \
      "data/B2-profile-otm.dat" using 1:2 with points pt 5 ps 0.5 lc rgb "blue" title "mpm-otm, OTM-P1", \
      "data/B2-profile-bsmpm.dat" using 1:2 with points pt 9 ps 0.6 lc rgb "dark-green" title "mpm-otm, BSMPM p = 2", \
-     "data/B2-profile-unified.dat" using 1:2 with points pt 4 ps 0.6 lc rgb "black" title "mpm-otm, unified p = 2"
+     "data/B2-profile-unified.dat" using 1:2 with points pt 4 ps 0.6 lc rgb "black" title "mpm-otm, unified p = 2", \
+     "data/B2-profile-mpm-maxent.dat" using 1:2 with points pt 11 ps 0.6 lc rgb "orange" title "mpm-otm, MPM-maxent d_{max} = 2", \
+     "data/B2-profile-otm-maxent.dat" using 1:2 with points pt 13 ps 0.6 lc rgb "purple" title "mpm-otm, OTM-maxent d_{max} = 2"
 
 set output "figures/B5-large.png"
 set multiplot layout 2,1 title "B5 large deformation: middle of the bar (thesis Figs. 4.7 and 4.8)"
@@ -134,13 +156,16 @@ set output "figures/B3-sigma11.png"
 set title "B3: sigma_{11} along X_2 = 0.066 at T = 3.5e-3 (journal Fig. 9)"
 set xlabel "X_1"
 set ylabel "sigma_{11} (Pa)"
-set key top right
+set key below center horizontal maxcols 3 Left reverse
 plot "data/B3-sigma11.dat" using 1:3 with lines lw 3 lc rgb "gray" title "exact", \
      "data/B3-sigma11.dat" using 1:2 with points pt 7 ps 0.6 lc rgb "red" title "mpm-otm, MPM-P1", \
      "data/B3-sigma11.dat" using 1:4 with points pt 5 ps 0.6 lc rgb "blue" title "mpm-otm, OTM-P1", \
      "data/B3-sigma11.dat" using 1:5 with points pt 9 ps 0.6 lc rgb "dark-green" title "mpm-otm, BSMPM p = 2", \
-     "data/B3-sigma11.dat" using 1:6 with points pt 4 ps 0.6 lc rgb "black" title "mpm-otm, unified p = 2"
+     "data/B3-sigma11.dat" using 1:6 with points pt 4 ps 0.6 lc rgb "black" title "mpm-otm, unified p = 2", \
+     "data/B3-sigma11.dat" using 1:7 with points pt 11 ps 0.6 lc rgb "orange" title "mpm-otm, MPM-maxent d_{max} = 3", \
+     "data/B3-sigma11.dat" using 1:8 with points pt 13 ps 0.6 lc rgb "purple" title "mpm-otm, OTM-maxent d_{max} = 2"
 
+set key inside noreverse Right vertical maxcols auto
 set output "figures/B1b-stress-profile.png"
 set title "B1b: stress at T = 1e-3 with 32 nodes (journal Fig. 5)"
 set xlabel "X (m)"
@@ -150,3 +175,38 @@ plot "data/B1b-stress-profile.dat" using 1:2 with lines lw 3 lc rgb "gray" title
      "data/B1b-stress-profile.dat" using 1:3 with points pt 7 ps 0.5 lc rgb "red" title "mpm-otm, MPM-P1", \
      "data/B1b-stress-profile.dat" using 1:4 with points pt 5 ps 0.5 lc rgb "blue" title "mpm-otm, OTM-P1", \
      "data/B1b-stress-profile.dat" using 1:5 with points pt 4 ps 0.6 lc rgb "black" title "mpm-otm, unified p = 2"
+
+set output "figures/max-ent-functions-1d.png"
+set terminal pngcairo size 1000,760 font ",11"
+set multiplot layout 2,2 title "1D cubic-spline priors and local max-ent functions, 11 nodes on [0, 1], d_{max} = 2 (journal Fig. 4)"
+unset key
+set xlabel "x"
+set xrange [0:1]
+set title "(a) cubic-spline priors w_i (Eq. 89)"
+set ylabel "w_i"
+plot for [i = 2:12] "data/max-ent-functions-1d.dat" using 1:i with lines lw 2
+set title "(b) derivatives dw_i/dx"
+set ylabel "dw_i/dx"
+plot for [i = 13:23] "data/max-ent-functions-1d.dat" using 1:i with lines lw 2
+set title "(c) max-ent functions phi_i (Eqs. 80-83)"
+set ylabel "phi_i"
+plot for [i = 24:34] "data/max-ent-functions-1d.dat" using 1:i with lines lw 2
+set title "(d) derivatives dphi_i/dx"
+set ylabel "dphi_i/dx"
+plot for [i = 35:45] "data/max-ent-functions-1d.dat" using 1:i with lines lw 2
+unset multiplot
+
+set terminal pngcairo size 800,560 font ",11"
+set output "figures/B3-sigma11-deviation.png"
+set title "B3: sigma_{11} - exact along X_2 = 0.066 at T = 3.5e-3, in % of the largest exact stress"
+set xlabel "X_1"
+set ylabel "deviation (%)"
+set xrange [0:1]
+set yrange [-2:2]
+set key below center horizontal maxcols 3 Left reverse
+plot "data/B3-sigma11.dat" using 1:(100 * ($4 - $3) / 5.5488e5) with points pt 5 ps 0.5 lc rgb "blue" title "mpm-otm, OTM-P1 (to +-6 %)", \
+     "data/B3-sigma11.dat" using 1:(100 * ($5 - $3) / 5.5488e5) with linespoints pt 9 ps 0.5 lc rgb "dark-green" title "mpm-otm, BSMPM p = 2", \
+     "data/B3-sigma11.dat" using 1:(100 * ($6 - $3) / 5.5488e5) with linespoints pt 4 ps 0.5 lc rgb "black" title "mpm-otm, unified p = 2", \
+     "data/B3-sigma11.dat" using 1:(100 * ($7 - $3) / 5.5488e5) with linespoints pt 11 ps 0.5 lc rgb "orange" title "mpm-otm, MPM-maxent d_{max} = 3", \
+     "data/B3-sigma11.dat" using 1:(100 * ($8 - $3) / 5.5488e5) with linespoints pt 13 ps 0.5 lc rgb "purple" title "mpm-otm, OTM-maxent d_{max} = 2"
+unset yrange

@@ -4,7 +4,8 @@
 # gnuplot (Debian package gnuplot-nox).
 #
 # Usage: doc/scripts/reproduce_benchmarks.sh [path to mpm-otm]
-# (default: build-release/mpm-otm, made by ./scripts/setup.sh run)
+# (default: build-release/mpm-otm, made by ./scripts/setup.sh run; the
+# program max-ent-functions-1d of the same build directory draws Fig. 4)
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
 exe=${1:-$root/build-release/mpm-otm}
@@ -41,6 +42,9 @@ track() {
       END { printf "%.6g %.8e %.8e\n", t, su / n, sv / n }' "$file"
   done | sort -g
 }
+
+echo "Journal Fig. 4: 1D max-ent functions, 11 nodes, d_max = 2"
+"$(dirname "$exe")/max-ent-functions-1d" 11 2 400 > "$data/max-ent-functions-1d.dat"
 
 echo "B1b: RMS displacement error at T = 1e-3 (P1, quadratic B-splines, max-ent)"
 for entry in mpm-p1:B1b-bar-fixed-ends.prm otm-p1:B1b-bar-fixed-ends-otm.prm \
@@ -89,7 +93,7 @@ cut -d, -f8 run/statistics.csv | tail -n +2 > otm.csv
 } > "$data/B1a-stress-error.dat"
 
 echo "B2: profiles at T = 0.4 and convergence at T = 0.1"
-for method in mpm otm bsmpm unified; do
+for method in mpm otm bsmpm unified mpm-maxent otm-maxent; do
   run B2-traction-bar-$method.prm ""
   {
     echo "# X  u  u_exact  sigma  sigma_exact  (prm/B2-traction-bar-$method.prm, T = 0.4)"
@@ -111,7 +115,7 @@ subsection Output
  set Write particle CSV = false
 end"
 {
-  echo "# material_nodes  rms_displacement_error: MPM-P1  OTM-P1  BSMPM  unified  (T = 0.1, 12 points per cell)"
+  echo "# material_nodes  rms_displacement_error: MPM-P1  OTM-P1  BSMPM  unified  MPM-maxent  OTM-maxent  MPM-maxent_consistent_mass  (T = 0.1, 12 points per cell)"
   for nodes in 5 9 17 33 65 129 257; do
     fixed_grid="subsection Mesh
  set Subdivisions = $((5 * (nodes - 1) / 4))
@@ -137,7 +141,23 @@ end"
     bsmpm=$(last 6)
     run B2-traction-bar-unified.prm "$short
 $material_grid"
-    echo "$nodes $mpm $otm $bsmpm $(last 6)"
+    unified=$(last 6)
+    run B2-traction-bar-mpm-maxent.prm "$short
+$fixed_grid
+subsection Mesh
+ set Upper corner = 1.25
+end"
+    mpm_maxent=$(last 6)
+    run B2-traction-bar-mpm-maxent.prm "$short
+$fixed_grid
+subsection Mesh
+ set Upper corner = 1.25
+end
+set Mass matrix = consistent"
+    mpm_maxent_consistent=$(last 6)
+    run B2-traction-bar-otm-maxent.prm "$short
+$material_grid"
+    echo "$nodes $mpm $otm $bsmpm $unified $mpm_maxent $(last 6) $mpm_maxent_consistent"
   done
 } > "$data/B2-convergence.dat"
 
@@ -224,7 +244,7 @@ tr -s ' \n' ' ' < consistent.txt | grep -o 'Stopped in time step [0-9]* (t = [0-
 
 echo "B3: sigma11 along X2 = 0.0664 at T = 3.5e-3"
 : > "$data/B3-errors.dat"
-for method in otm bsmpm unified; do
+for method in otm bsmpm unified mpm-maxent otm-maxent; do
   run B3-plate-manufactured-$method.prm "subsection Output
  set Interval = 0
 end"
@@ -238,7 +258,7 @@ end"
 echo "mpm $(last 6) $(last 8)" >> "$data/B3-errors.dat"
 sed -i '1i # method  rms_displacement_error  rms_stress_error  (T = 3.5e-3, prm/B3-plate-manufactured*.prm)' "$data/B3-errors.dat"
 {
-  echo "# X1  sigma11_MPM_P1  sigma11_exact  sigma11_OTM_P1  sigma11_BSMPM  sigma11_unified  (prm/B3-plate-manufactured*.prm)"
+  echo "# X1  sigma11_MPM_P1  sigma11_exact  sigma11_OTM_P1  sigma11_BSMPM  sigma11_unified  sigma11_MPM_maxent  sigma11_OTM_maxent  (prm/B3-plate-manufactured*.prm)"
   awk -F, 'NR > 1 && ($3 - 0.06640625)^2 < 1e-18 {
       pi = 3.14159265358979; E = 1e7; nu = 0.3; rho = 1000; A = 0.005; t = 3.5e-3
       lambda = E * nu / ((1 + nu) * (1 - 2 * nu)); mu = E / (2 * (1 + nu)); c = sqrt(E / rho)
@@ -247,7 +267,8 @@ sed -i '1i # method  rms_displacement_error  rms_stress_error  (T = 3.5e-3, prm/
       J = F1 * F2
       printf "%.8f %.8e %.8e\n", $2, $10, (lambda * log(J) + mu * (F1 * F1 - 1)) / J }' \
     run/particles-00035.csv | sort -g |
-    paste -d' ' - <(cut -d' ' -f2 otm.dat) <(cut -d' ' -f2 bsmpm.dat) <(cut -d' ' -f2 unified.dat)
+    paste -d' ' - <(cut -d' ' -f2 otm.dat) <(cut -d' ' -f2 bsmpm.dat) <(cut -d' ' -f2 unified.dat) \
+      <(cut -d' ' -f2 mpm-maxent.dat) <(cut -d' ' -f2 otm-maxent.dat)
 } > "$data/B3-sigma11.dat"
 
 echo "Plots"

@@ -31,29 +31,28 @@ namespace MpmOtm
 
 
 
-  namespace
+  void
+  cubic_spline_prior(const double r, double &value, double &derivative)
   {
-    /**
-     * The cubic-spline prior of journal Eq. 89 and its derivative in r.
-     */
-    inline void
-    cubic_spline(const double r, double &value, double &derivative)
-    {
-      if (r <= 0.5)
-        {
-          value      = 2. / 3. - 4. * r * r + 4. * r * r * r;
-          derivative = -8. * r + 12. * r * r;
-        }
-      else
-        {
-          // 4/3 - 4 r + 4 r^2 - 4/3 r^3 = 4/3 (1 - r)^3, in the form that
-          // stays positive up to r = 1 (no cancellation).
-          const double s = 1. - r;
-          value          = 4. / 3. * s * s * s;
-          derivative     = -4. * s * s;
-        }
-    }
-  } // namespace
+    if (r >= 1.)
+      {
+        value      = 0.;
+        derivative = 0.;
+      }
+    else if (r <= 0.5)
+      {
+        value      = 2. / 3. - 4. * r * r + 4. * r * r * r;
+        derivative = -8. * r + 12. * r * r;
+      }
+    else
+      {
+        // 4/3 - 4 r + 4 r^2 - 4/3 r^3 = 4/3 (1 - r)^3, in the form that
+        // stays positive up to r = 1 (no cancellation).
+        const double s = 1. - r;
+        value          = 4. / 3. * s * s * s;
+        derivative     = -4. * s * s;
+      }
+  }
 
 
 
@@ -229,7 +228,7 @@ namespace MpmOtm
         if (r >= 1.)
           continue;
         double w, dw_dr;
-        cubic_spline(r, w, dw_dr);
+        cubic_spline_prior(r, w, dw_dr);
         reached_candidate[n] = k;
         offset[n]            = dx;
         weight[n]            = w;
@@ -296,41 +295,56 @@ namespace MpmOtm
 
     // Newton's method on ln Z (Eq. 83, convex) with a backtracking line
     // search: accept a step that decreases ln Z (Armijo) or, once ln Z is
-    // flat to round-off, the residual; otherwise halve it.
+    // flat to round-off, the residual; otherwise halve it. Converged means a
+    // residual below the tolerance and a positive definite Hessian: at a
+    // node on the boundary of the hull the residual vanishes only as the
+    // multipliers tend to infinity, and multipliers far too large (a first
+    // guess from elsewhere) make the other functions underflow to zero,
+    // the residual exactly zero and H = 0, from which no gradient follows.
     const double tolerance = 1e-12 * length_scale;
     double      *phi       = phi_current.data();
     double      *trial_phi = phi_trial.data();
-    State        state     = pass(lambda, phi);
-    bool         converged = false;
-    for (unsigned int iteration = 0; iteration < 100; ++iteration)
+    State        state{0., 0., {}, {}};
+    const auto   newton = [&]() {
+      state = pass(lambda, phi);
+      for (unsigned int iteration = 0; iteration < 100; ++iteration)
+        {
+          const double residual_norm    = state.residual.norm();
+          const bool   positive_hessian = determinant(state.hessian) > 0.;
+          if (residual_norm <= tolerance && positive_hessian)
+            return true;
+          if (!positive_hessian)
+            return false;
+          const Tensor<1, dim> step = -(invert(state.hessian) * state.residual);
+          const double         slope    = state.residual * step;
+          double               alpha    = 1.;
+          bool                 accepted = false;
+          for (unsigned int halving = 0; halving < 40; ++halving, alpha *= 0.5)
+            {
+              const State trial = pass(lambda + alpha * step, trial_phi);
+              if (trial.residual.norm() < residual_norm ||
+                  trial.ln_z() <= state.ln_z() + 1e-4 * alpha * slope)
+                {
+                  lambda += alpha * step;
+                  state = trial;
+                  std::swap(phi, trial_phi);
+                  accepted = true;
+                  break;
+                }
+            }
+          if (!accepted)
+            return false;
+        }
+      return false;
+    };
+    // The first guess (the multipliers of the point's last step, or of the
+    // last point) can lie far from the solution, e.g. near the hull's
+    // boundary; start again from zero if it fails.
+    bool converged = newton();
+    if (!converged && lambda.norm() > 0.)
       {
-        const double residual_norm = state.residual.norm();
-        if (residual_norm <= tolerance)
-          {
-            converged = true;
-            break;
-          }
-        if (!(determinant(state.hessian) > 0.))
-          break;
-        const Tensor<1, dim> step  = -(invert(state.hessian) * state.residual);
-        const double         slope = state.residual * step;
-        double               alpha = 1.;
-        bool                 accepted = false;
-        for (unsigned int halving = 0; halving < 40; ++halving, alpha *= 0.5)
-          {
-            const State trial = pass(lambda + alpha * step, trial_phi);
-            if (trial.residual.norm() < residual_norm ||
-                trial.ln_z() <= state.ln_z() + 1e-4 * alpha * slope)
-              {
-                lambda += alpha * step;
-                state = trial;
-                std::swap(phi, trial_phi);
-                accepted = true;
-                break;
-              }
-          }
-        if (!accepted)
-          break;
+        lambda    = Tensor<1, dim>();
+        converged = newton();
       }
     if (!converged)
       {
@@ -338,30 +352,39 @@ namespace MpmOtm
         message << "the max-ent Lagrange multipliers at x = (" << x
                 << ") did not converge (residual " << state.residual.norm()
                 << "): x lies outside the convex hull of the " << n
-                << " nodes that reach it, or on its boundary. Keep the "
-                   "material inside the grid's nodes, or increase Max-ent "
-                   "support factor (now "
+                << " nodes that reach it. Keep the material inside the "
+                   "grid's nodes, or increase Max-ent support factor (now "
                 << support_factor << ").";
         lambda = Tensor<1, dim>();
         return message.str();
       }
 
     // Gradients (Eqs. 84-86 with the sign derived in the class
-    // documentation).
-    Tensor<1, dim> mean_log_gradient;
-    Tensor<2, dim> A;
+    // documentation), in the form that holds for the residual r that
+    // Newton's method leaves: with the offsets from the phi-weighted mean
+    // of the nodes, x - x_k - r, and (I + A^T - g r^T) H^-1 (g the mean of
+    // grad w_k / w_k, H the centred Hessian), the gradients satisfy
+    // sum_k grad phi_k = 0 and sum_k x_k (grad phi_k)^T = I exactly. This
+    // matters near a node on the hull's boundary, where H ~ |r| / h: there
+    // the printed form loses the node's own gradient (0 instead of -1/h
+    // exactly on an end node in 1D, as the offset x - x_k vanishes).
+    const Tensor<1, dim> &residual = state.residual;
+    Tensor<1, dim>        mean_log_gradient;
+    Tensor<2, dim>        A;
     for (unsigned int k = 0; k < n; ++k)
       {
         mean_log_gradient += phi[k] * log_gradient[k];
         A += outer_product(phi[k] * offset[k], log_gradient[k]);
       }
-    const Tensor<2, dim> M =
-      (unit_symmetric_tensor<dim>() + transpose(A)) * invert(state.hessian);
+    const Tensor<2, dim> M = (unit_symmetric_tensor<dim>() + transpose(A) -
+                              outer_product(mean_log_gradient, residual)) *
+                             invert(state.hessian);
     for (unsigned int k = 0; k < n; ++k)
       {
         values[reached_candidate[k]] = phi[k];
         gradients[reached_candidate[k]] =
-          phi[k] * (log_gradient[k] - mean_log_gradient - M * offset[k]);
+          phi[k] *
+          (log_gradient[k] - mean_log_gradient - M * (offset[k] - residual));
       }
     return "";
   }
@@ -401,6 +424,26 @@ namespace MpmOtm
     values.resize(indices.size());
     gradients.resize(indices.size());
     return failure;
+  }
+
+
+
+  template <int dim>
+  const Point<dim> &
+  MaxEnt<dim>::node(const types::global_dof_index i) const
+  {
+    AssertIndexRange(i, nodes.size());
+    return nodes[i];
+  }
+
+
+
+  template <int dim>
+  double
+  MaxEnt<dim>::support_radius(const types::global_dof_index i) const
+  {
+    AssertIndexRange(i, radii.size());
+    return radii[i];
   }
 
 
@@ -567,9 +610,11 @@ namespace MpmOtm
     values.reinit(coefficients.get_partitioner());
     for (unsigned int i = 0; i < nodes.size(); ++i)
       {
-        // On the hull's boundary the multipliers are infinite (weak
-        // Kronecker delta): evaluate 1e-6 of the way to the centroid of the
-        // node's neighbours instead, which changes the value by O(1e-6 h).
+        // On the hull's boundary the multipliers grow until the functions of
+        // the nodes off the boundary fall below Newton's tolerance (weak
+        // Kronecker delta). Should that fail (a node cloud distorted by the
+        // motion), evaluate 1e-6 of the way to the centroid of the node's
+        // neighbours instead, which changes the value by O(1e-6 h).
         std::string failure =
           evaluate_at(nodes[i], point_indices, point_values, point_gradients);
         if (!failure.empty())

@@ -15,7 +15,17 @@
 // - the evaluation of all material points (evaluate(): each cell's list of
 //   candidate nodes, or the R-tree for a point that has left its cell's
 //   bounding box, as OTM points may) equals the evaluation point by point
-//   (evaluate_at()), and the padded functions of a cell's list are zero.
+//   (evaluate_at()), and the padded functions of a cell's list are zero;
+// - on nodes of the hull's boundary (the end nodes in 1D; a side node and a
+//   corner in 2D), reached with first guesses from elsewhere: the functions
+//   of the nodes off the boundary vanish (weak Kronecker delta; in 1D the
+//   end node's function is 1), and the gradients are the limits from
+//   inside. In 1D these are exact: next to an end node x_e, at distance
+//   delta inside, linear reproduction sum_k phi_k (x_k - x) = 0 leaves
+//   phi_n = delta / h + O(delta^2) for the neighbour x_n at distance h, and
+//   the functions beyond it are O(delta^2), so d phi_n / dx = -d phi_e / dx
+//   = 1 / (x_n - x_e), whatever the prior. Checked against these values and
+//   against one-sided second-order finite differences from inside.
 
 #include <mpm_otm/grid_system/background_grid.h>
 #include <mpm_otm/material_points/material_points.h>
@@ -223,6 +233,199 @@ namespace
 
 
   /**
+   * The functions at a point @p x on the boundary of the hull against
+   * one-sided second-order finite differences in the directions @p inward
+   * (+1 or -1 per coordinate: the side of the hull), and the identities
+   * sum_k grad phi_k = 0, sum_k x_k (grad phi_k)^T = I. Returns the largest
+   * deviation relative to 1/h; the values and gradients at x are left in
+   * @p indices, @p values, @p gradients.
+   */
+  template <int dim>
+  double
+  boundary_deviation(const MaxEnt<dim>                    &functions,
+                     const Point<dim>                     &x,
+                     const Tensor<1, dim>                 &inward,
+                     const double                          h,
+                     std::vector<types::global_dof_index> &indices,
+                     std::vector<double>                  &values,
+                     std::vector<Tensor<1, dim>>          &gradients)
+  {
+    const std::string failure =
+      functions.evaluate_at(x, indices, values, gradients);
+    check(failure.empty(), failure);
+    double         deviation = 0;
+    Tensor<1, dim> gradient_sum;
+    Tensor<2, dim> moment;
+    for (unsigned int k = 0; k < indices.size(); ++k)
+      {
+        gradient_sum += gradients[k];
+        moment += outer_product(functions.node(indices[k]), gradients[k]);
+      }
+    deviation = std::max({deviation,
+                          gradient_sum.norm() * h,
+                          (moment - unit_symmetric_tensor<dim>()).norm()});
+
+    // f'(x) = (-3 f(x) + 4 f(x + e) - f(x + 2 e)) / (2 e) + O(e^2); with
+    // e = 1e-5 h the truncation error is about 1e-10 / h and the values'
+    // error of 1e-12 (Newton's tolerance) adds 1e-7 / h.
+    const double                         e = 1e-5 * h;
+    std::vector<types::global_dof_index> shifted_indices;
+    std::vector<double>                  shifted_values;
+    std::vector<Tensor<1, dim>>          unused;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        std::vector<double> one(functions.n_functions()),
+          two(functions.n_functions());
+        for (const unsigned int steps : {1u, 2u})
+          {
+            Point<dim> y = x;
+            y[d] += steps * e * inward[d];
+            const std::string shifted_failure =
+              functions.evaluate_at(y, shifted_indices, shifted_values, unused);
+            check(shifted_failure.empty(), shifted_failure);
+            for (unsigned int k = 0; k < shifted_indices.size(); ++k)
+              (steps == 1 ? one : two)[shifted_indices[k]] = shifted_values[k];
+          }
+        // The unshifted evaluation again: the shifted ones overwrote the
+        // work arrays of evaluate_at() but not our copies.
+        for (unsigned int k = 0; k < indices.size(); ++k)
+          {
+            const double fd =
+              inward[d] *
+              (-3. * values[k] + 4. * one[indices[k]] - two[indices[k]]) /
+              (2. * e);
+            deviation = std::max(deviation, std::abs(fd - gradients[k][d]) * h);
+          }
+      }
+    return deviation;
+  }
+
+
+
+  /**
+   * Max-ent functions exactly on nodes of the hull's boundary: 1D end nodes
+   * against the exact limits (see the top of the file), a side node and a
+   * corner in 2D against one-sided finite differences. Each point is
+   * evaluated right after a point elsewhere, whose multipliers are the
+   * first guess (from the other end they are far off: this once gave H = 0
+   * and NaN gradients).
+   */
+  void
+  check_boundary_nodes()
+  {
+    std::vector<types::global_dof_index> indices;
+    std::vector<double>                  values;
+    std::vector<Tensor<1, 1>>            gradients;
+    for (const double support_factor : {2., 3.})
+      {
+        const unsigned int n_cells = 10;
+        const double       h       = 1. / n_cells;
+        auto               simulator =
+          make_unit_box_simulator<1>(n_cells, "output-max-ent-grid");
+        MaxEnt<1> functions(support_factor);
+        functions.initialize(simulator->background_grid());
+        double value_error = 0, exact_error = 0, fd_error = 0;
+        for (const double start : {0.5, 1., 0.})
+          for (const double end : {0., 1.})
+            {
+              std::vector<double>       unused_values;
+              std::vector<Tensor<1, 1>> unused_gradients;
+              check(functions
+                      .evaluate_at(Point<1>(start),
+                                   indices,
+                                   unused_values,
+                                   unused_gradients)
+                      .empty(),
+                    "evaluation at the first point failed");
+              const double inward = (end == 0.) ? 1. : -1.;
+              fd_error            = std::max(fd_error,
+                                  boundary_deviation(functions,
+                                                     Point<1>(end),
+                                                     Tensor<1, 1>({inward}),
+                                                     h,
+                                                     indices,
+                                                     values,
+                                                     gradients));
+              // Exact limits: the end node's function is 1 with slope
+              // -inward / h, its neighbour's slope is inward / h, every
+              // other function and slope vanishes.
+              for (unsigned int k = 0; k < indices.size(); ++k)
+                {
+                  const double distance =
+                    std::abs(functions.node(indices[k])[0] - end);
+                  const double exact_value = (distance < 1e-12) ? 1. : 0.;
+                  const double exact_slope = (distance < 1e-12) ? -inward / h :
+                                             (std::abs(distance - h) < 1e-12) ?
+                                                                  inward / h :
+                                                                  0.;
+                  value_error =
+                    std::max(value_error, std::abs(values[k] - exact_value));
+                  exact_error =
+                    std::max(exact_error,
+                             std::abs(gradients[k][0] - exact_slope) * h);
+                }
+            }
+        deallog << "1D, " << n_cells << " cells, d_max = " << std::fixed
+                << std::setprecision(1) << support_factor
+                << ", on the end nodes: values 1 and 0 to 1e-11 "
+                << (value_error < 1e-11)
+                << ", slopes -+1/h and +-1/h of the end node and its "
+                   "neighbour, 0 else, to 1e-9/h "
+                << (exact_error < 1e-9)
+                << ", one-sided finite differences to 1e-5/h "
+                << (fd_error < 1e-5) << std::endl;
+        check(value_error < 1e-11,
+              "value on an end node: " + rounded(value_error));
+        check(exact_error < 1e-9,
+              "slope on an end node against the exact limit: " +
+                rounded(exact_error));
+        check(fd_error < 1e-5,
+              "slope on an end node against finite differences: " +
+                rounded(fd_error));
+      }
+
+    // 2D: a node on the side x = 0 and the corner (0, 0).
+    const unsigned int n_cells = 6;
+    auto simulator = make_unit_box_simulator<2>(n_cells, "output-max-ent-grid");
+    MaxEnt<2> functions(2.);
+    functions.initialize(simulator->background_grid());
+    std::vector<types::global_dof_index> indices_2d;
+    std::vector<double>                  values_2d;
+    std::vector<Tensor<1, 2>>            gradients_2d;
+    double                               deviation = 0;
+    for (const Point<2> &x : {Point<2>(0., 0.5), Point<2>(0., 0.)})
+      {
+        check(
+          functions
+            .evaluate_at(Point<2>(1., 1.), indices_2d, values_2d, gradients_2d)
+            .empty(),
+          "evaluation at the far corner failed");
+        deviation = std::max(deviation,
+                             boundary_deviation(functions,
+                                                x,
+                                                Tensor<1, 2>({1., 1.}),
+                                                1. / n_cells,
+                                                indices_2d,
+                                                values_2d,
+                                                gradients_2d));
+        // Weak Kronecker delta: the functions of the nodes off the side
+        // x = 0 vanish on it (at the corner, all but the corner's).
+        for (unsigned int k = 0; k < indices_2d.size(); ++k)
+          if (functions.node(indices_2d[k])[0] > 1e-12 ||
+              (x[1] == 0. && functions.node(indices_2d[k])[1] > 1e-12))
+            deviation = std::max(deviation, values_2d[k]);
+      }
+    deallog << "2D, on a side node and a corner node: functions off the "
+               "side vanish, gradients "
+               "against one-sided finite differences and the consistency "
+               "identities to 1e-5/h "
+            << (deviation < 1e-5) << std::endl;
+    check(deviation < 1e-5, "2D boundary nodes: " + rounded(deviation));
+  }
+
+
+
+  /**
    * Bad input is reported, never a NaN: a point that too few supports
    * reach, and a point outside the convex hull of the nodes.
    */
@@ -262,6 +465,7 @@ main(int argc, char **argv)
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   initlog();
   check_errors();
+  check_boundary_nodes();
   check_properties<1>(8, 2.);
   check_properties<1>(8, 3.);
   check_properties<2>(6, 2.);

@@ -11,6 +11,15 @@
 namespace MpmOtm
 {
   /**
+   * The cubic-spline prior of journal Eq. 89, w(r) = 2/3 - 4 r^2 + 4 r^3 for
+   * r <= 1/2, 4/3 (1 - r)^3 for 1/2 < r < 1 and 0 beyond, at the normalised
+   * distance @p r = |x - x_i| / d_i (Eq. 87): its @p value and its
+   * @p derivative dw/dr.
+   */
+  void
+  cubic_spline_prior(const double r, double &value, double &derivative);
+
+  /**
    * Local maximum-entropy shape functions (Arroyo and Ortiz; journal
    * Sect. 6.3, Eqs. 77-89) on the node cloud of the grid's vertices: fixed
    * nodes for MPM, nodes that move with the material for OTM. At a point x
@@ -24,9 +33,12 @@ namespace MpmOtm
    *                     - (I + A^T) H^-1 (x - x_i)),
    * H = sum_j phi_j (x - x_j) (x - x_j)^T, A = sum_j phi_j (x - x_j)
    * (grad w_j / w_j)^T (journal Eqs. 84-86; Eq. 84 as printed has the
-   * opposite sign). The nodes whose support contains x are found with an
-   * R-tree of the supports' bounding boxes, so the cost per point does not
-   * grow with the number of nodes.
+   * opposite sign). They are evaluated in a form that stays exact for the
+   * small residual Newton's method leaves (offsets from the phi-weighted mean
+   * of the nodes, see solve()), which matters at and next to a node on the
+   * boundary of the nodes' convex hull. The nodes whose support contains x are
+   * found with an R-tree of the supports' bounding boxes, so the cost per point
+   * does not grow with the number of nodes.
    *
    * The functions reach beyond one cell's vertices, so they are not the
    * degrees of freedom of a FiniteElement; they are numbered like the
@@ -119,6 +131,18 @@ namespace MpmOtm
                 std::vector<types::global_dof_index> &indices,
                 std::vector<double>                  &values,
                 std::vector<Tensor<1, dim>>          &gradients) const;
+
+    /**
+     * The current position of the node of function @p i.
+     */
+    const Point<dim> &
+    node(const types::global_dof_index i) const;
+
+    /**
+     * The support radius d_i = d_max zeta_i of function @p i (Eq. 88).
+     */
+    double
+    support_radius(const types::global_dof_index i) const;
 
   private:
     double support_factor;
