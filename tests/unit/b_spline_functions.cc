@@ -85,7 +85,7 @@ namespace
     for (const auto &cell :
          simulator->background_grid().triangulation().active_cell_iterators())
       {
-        splines.cell_functions(cell, indices);
+        splines.functions_on_cell(cell, indices);
         const auto &first = splines.first_function(cell);
         for (unsigned int sample = 0; sample < 4; ++sample)
           {
@@ -265,7 +265,7 @@ namespace
     const auto integrate = [&](const auto &visit) {
       for (const auto &cell : tria.active_cell_iterators())
         {
-          splines.cell_functions(cell, indices);
+          splines.functions_on_cell(cell, indices);
           const double volume = cell->measure();
           for (unsigned int q = 0; q < quadrature.size(); ++q)
             {
@@ -314,7 +314,7 @@ namespace
       {
         fe_values.reinit(cell);
         fe_values.get_function_values(bernstein, field);
-        splines.cell_functions(cell, indices);
+        splines.functions_on_cell(cell, indices);
         for (unsigned int q = 0; q < quadrature.size(); ++q)
           {
             splines.cell_values(cell,
