@@ -210,3 +210,40 @@ plot "data/B3-sigma11.dat" using 1:(100 * ($4 - $3) / 5.5488e5) with points pt 5
      "data/B3-sigma11.dat" using 1:(100 * ($7 - $3) / 5.5488e5) with linespoints pt 11 ps 0.5 lc rgb "orange" title "mpm-otm, MPM-maxent d_{max} = 3", \
      "data/B3-sigma11.dat" using 1:(100 * ($8 - $3) / 5.5488e5) with linespoints pt 13 ps 0.5 lc rgb "purple" title "mpm-otm, OTM-maxent d_{max} = 2"
 unset yrange
+
+set output "figures/B4-projection.png"
+set title "B4: L2 projection of sin(pi x) sin(pi y) on n x n vertices (thesis Sect. 3.6)"
+set logscale xy
+set format y "10^{%L}"
+set xrange [2:100]
+set yrange [1e-7:1]
+set xlabel "n (vertices per side, h = 1 / (n - 1))"
+set ylabel "L2 error"
+set key top right
+plot "data/B4-projection.dat" using 1:4 with linespoints lw 2 pt 7 lc rgb "dark-green" title "mpm-otm, Powell-Sabin, structured", \
+     "data/B4-projection.dat" using 1:9 with linespoints lw 2 pt 9 dt 2 lc rgb "dark-green" title "mpm-otm, Powell-Sabin, perturbed (0.2 h)", \
+     "data/B4-projection.dat" using 1:7 with linespoints lw 2 pt 5 lc rgb "blue" title "mpm-otm, P1, structured", \
+     "data/B4-projection.dat" using 1:11 with linespoints lw 2 pt 11 dt 2 lc rgb "blue" title "mpm-otm, P1, perturbed (0.2 h)", \
+     "-" using 1:2 with points pt 6 ps 2 lc rgb "black" title "thesis Table 3.1 (Powell-Sabin)", \
+     "-" using 1:2 with points pt 4 ps 2 lc rgb "black" title "BENCHMARKS.md B4 (P1, true L2)", \
+     "-" using 1:2 with points pt 3 ps 1.5 lc rgb "gray" title "thesis Table 3.2 as printed (other f)", \
+     [5:65] 0.03/(x-1)**3 with lines dt 3 lc rgb "black" title "third order", \
+     [5:65] 0.8/(x-1)**2 with lines dt 2 lc rgb "gray" title "second order"
+3 1.18575e-02
+5 1.14331e-03
+9 1.31622e-04
+17 1.61689e-05
+e
+5 2.7726e-02
+9 6.5955e-03
+17 1.6180e-03
+33 4.0235e-04
+e
+5 1.71200e-03
+9 4.13089e-04
+17 1.02202e-04
+33 2.54938e-05
+e
+unset logscale
+set format y "%g"
+set autoscale xy

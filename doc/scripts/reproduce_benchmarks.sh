@@ -271,6 +271,13 @@ sed -i '1i # method  rms_displacement_error  rms_stress_error  (T = 3.5e-3, prm/
       <(cut -d' ' -f2 mpm-maxent.dat) <(cut -d' ' -f2 otm-maxent.dat)
 } > "$data/B3-sigma11.dat"
 
+echo "B4: L2 projection onto Powell-Sabin splines and P1, structured and perturbed grids"
+# No time stepping: a program of its own (doc/scripts/b4_projection.cc),
+# built next to mpm-otm (target b4-projection).
+b4=$(dirname "$exe")/b4-projection
+[ -x "$b4" ] || cmake --build "$(dirname "$exe")" --target b4-projection > /dev/null
+"$b4" > "$data/B4-projection.dat"
+
 echo "Plots"
 cd "$root/doc"
 gnuplot scripts/benchmarks.gp
