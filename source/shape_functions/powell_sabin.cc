@@ -671,6 +671,17 @@ namespace MpmOtm
         const unsigned int o      = (j + 3 - k) % 3;
         const auto        &c      = weight[o];
         const auto        &c_grad = grad_weight[o];
+        if (o == 2)
+          {
+            // The far vertex's functions reach T_{k,half} only through Lt.
+            for (unsigned int q = 0; q < 3; ++q)
+              {
+                const double lt      = data.ordinates[3 * j + q][3];
+                values[3 * j + q]    = lt * c[3];
+                gradients[3 * j + q] = lt * c_grad[3];
+              }
+            continue;
+          }
         for (unsigned int q = 0; q < 3; ++q)
           {
             const auto &ordinate = data.ordinates[3 * j + q];
