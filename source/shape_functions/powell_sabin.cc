@@ -222,29 +222,30 @@ namespace MpmOtm
     }
 
     /**
-     * Bernstein polynomials of degree 2 in the order (200, 020, 002, 110,
-     * 011, 101) and their derivatives by sigma_c.
+     * Bernstein polynomials of degree 2 in the barycentric coordinates
+     * @p sigma of a triangle, in the order (200, 020, 002, 110, 011, 101),
+     * and their gradients from the gradients @p grad_sigma of the
+     * coordinates.
      */
     void
-    bernstein(const std::array<double, 3> &s,
-              double                      *values,
-              double (*derivatives)[3])
+    bernstein(const std::array<double, 3>       &sigma,
+              const std::array<Tensor<1, 2>, 3> &grad_sigma,
+              double *const                      values,
+              Tensor<1, 2> *const                gradients)
     {
-      values[0]            = s[0] * s[0];
-      values[1]            = s[1] * s[1];
-      values[2]            = s[2] * s[2];
-      values[3]            = 2. * s[0] * s[1];
-      values[4]            = 2. * s[1] * s[2];
-      values[5]            = 2. * s[0] * s[2];
-      const double d[6][3] = {{2. * s[0], 0., 0.},
-                              {0., 2. * s[1], 0.},
-                              {0., 0., 2. * s[2]},
-                              {2. * s[1], 2. * s[0], 0.},
-                              {0., 2. * s[2], 2. * s[1]},
-                              {2. * s[2], 0., 2. * s[0]}};
-      for (unsigned int b = 0; b < 6; ++b)
-        for (unsigned int c = 0; c < 3; ++c)
-          derivatives[b][c] = d[b][c];
+      const double s0 = sigma[0], s1 = sigma[1], s2 = sigma[2];
+      values[0]    = s0 * s0;
+      values[1]    = s1 * s1;
+      values[2]    = s2 * s2;
+      values[3]    = 2. * s0 * s1;
+      values[4]    = 2. * s1 * s2;
+      values[5]    = 2. * s0 * s2;
+      gradients[0] = (2. * s0) * grad_sigma[0];
+      gradients[1] = (2. * s1) * grad_sigma[1];
+      gradients[2] = (2. * s2) * grad_sigma[2];
+      gradients[3] = (2. * s1) * grad_sigma[0] + (2. * s0) * grad_sigma[1];
+      gradients[4] = (2. * s2) * grad_sigma[1] + (2. * s1) * grad_sigma[2];
+      gradients[5] = (2. * s2) * grad_sigma[0] + (2. * s0) * grad_sigma[2];
     }
   } // namespace
 
@@ -618,41 +619,77 @@ namespace MpmOtm
         grad_sigma = {
           {grad_s / rho, grad_t - ((1. - rho) / rho) * grad_s, grad_w}};
       }
-    double b[6], db[6][3];
-    bernstein(sigma, b, db);
+    double       b[6];
+    Tensor<1, 2> grad_b[6];
+    bernstein(sigma, grad_sigma, b, grad_b);
 
-    // The six ordinates of each function on T_{k,half} (thesis Eqs. 3.54-3.58):
-    // the owner V_k, V_{k+1} or the far vertex V_{k+2}.
+    // On T_{k,half} each function is its four ordinates (f, Lf, Lb, Lt) of
+    // the owner vertex times weights made of the six Bernstein polynomials
+    // (thesis Eqs. 3.54-3.58). The weights depend only on the owner's place
+    // in the sub-triangle: o = 0 for V_k, 1 for V_{k+1}, 2 for the far
+    // vertex V_{k+2}, so they are formed once per point for all nine
+    // functions.
+    const double a_k = data.a[k], a_k1 = data.a[k1], a_m = data.a[m];
+    std::array<std::array<double, 4>, 3>       weight;
+    std::array<std::array<Tensor<1, 2>, 4>, 3> grad_weight;
+    const Tensor<1, 2>                         zero;
+    if (half == 0)
+      {
+        weight[0] = {
+          {b[0], rho * b[1] + b[3], 0., a_k * b[2] + rho * b[4] + b[5]}};
+        grad_weight[0] = {{grad_b[0],
+                           rho * grad_b[1] + grad_b[3],
+                           zero,
+                           a_k * grad_b[2] + rho * grad_b[4] + grad_b[5]}};
+        weight[1]      = {
+               {0., 0., (1. - rho) * b[1], a_k1 * b[2] + (1. - rho) * b[4]}};
+        grad_weight[1] = {{zero,
+                           zero,
+                           (1. - rho) * grad_b[1],
+                           a_k1 * grad_b[2] + (1. - rho) * grad_b[4]}};
+      }
+    else
+      {
+        weight[0]      = {{0., rho * b[0], 0., a_k * b[2] + rho * b[5]}};
+        grad_weight[0] = {
+          {zero, rho * grad_b[0], zero, a_k * grad_b[2] + rho * grad_b[5]}};
+        weight[1]      = {{b[1],
+                           0.,
+                           (1. - rho) * b[0] + b[3],
+                           a_k1 * b[2] + b[4] + (1. - rho) * b[5]}};
+        grad_weight[1] = {
+          {grad_b[1],
+           zero,
+           (1. - rho) * grad_b[0] + grad_b[3],
+           a_k1 * grad_b[2] + grad_b[4] + (1. - rho) * grad_b[5]}};
+      }
+    weight[2]      = {{0., 0., 0., a_m * b[2]}};
+    grad_weight[2] = {{zero, zero, zero, a_m * grad_b[2]}};
+
     for (unsigned int j = 0; j < 3; ++j)
       {
-        const unsigned int owner    = (j + 3 - k) % 3;
-        const double       weight_z = data.a[j];
+        const unsigned int o      = (j + 3 - k) % 3;
+        const auto        &c      = weight[o];
+        const auto        &c_grad = grad_weight[o];
+        if (o == 2)
+          {
+            // The far vertex's functions reach T_{k,half} only through Lt.
+            for (unsigned int q = 0; q < 3; ++q)
+              {
+                const double lt      = data.ordinates[3 * j + q][3];
+                values[3 * j + q]    = lt * c[3];
+                gradients[3 * j + q] = lt * c_grad[3];
+              }
+            continue;
+          }
         for (unsigned int q = 0; q < 3; ++q)
           {
-            const auto &[f, lf, lb, lt]    = data.ordinates[3 * j + q];
-            std::array<double, 6> ordinate = {
-              {0., 0., weight_z * lt, 0., 0., 0.}};
-            if (half == 0 && owner == 0)
-              ordinate = {{f, rho * lf, weight_z * lt, lf, rho * lt, lt}};
-            else if (half == 0 && owner == 1)
-              ordinate = {
-                {0., (1. - rho) * lb, weight_z * lt, 0., (1. - rho) * lt, 0.}};
-            else if (half == 1 && owner == 0)
-              ordinate = {{rho * lf, 0., weight_z * lt, 0., 0., rho * lt}};
-            else if (half == 1 && owner == 1)
-              ordinate = {
-                {(1. - rho) * lb, f, weight_z * lt, lb, lt, (1. - rho) * lt}};
-
-            double       value = 0;
-            Tensor<1, 2> gradient;
-            for (unsigned int e = 0; e < 6; ++e)
-              {
-                value += ordinate[e] * b[e];
-                for (unsigned int c = 0; c < 3; ++c)
-                  gradient += (ordinate[e] * db[e][c]) * grad_sigma[c];
-              }
-            values[3 * j + q]    = value;
-            gradients[3 * j + q] = gradient;
+            const auto &ordinate = data.ordinates[3 * j + q];
+            values[3 * j + q]    = ordinate[0] * c[0] + ordinate[1] * c[1] +
+                                ordinate[2] * c[2] + ordinate[3] * c[3];
+            gradients[3 * j + q] =
+              ordinate[0] * c_grad[0] + ordinate[1] * c_grad[1] +
+              ordinate[2] * c_grad[2] + ordinate[3] * c_grad[3];
           }
       }
   }

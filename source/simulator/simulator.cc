@@ -314,7 +314,9 @@ namespace MpmOtm
                 ExcMessage("No material point was created: the problem's "
                            "material region contains no block centre of "
                            "the grid."));
+    Timer shape_function_timer(communicator, true);
     shape_functions->initialize(*grid);
+    shape_function_timer.stop();
     system = std::make_unique<NodalSystem<dim>>();
     system->setup(*shape_functions,
                   problem_description->fixed_components(),
@@ -337,6 +339,9 @@ namespace MpmOtm
           << points->n_global_points() << " material points, "
           << Utilities::MPI::n_mpi_processes(communicator) << " MPI rank(s)"
           << std::endl;
+    pcout << "set-up of the shape functions: wall time = " << std::fixed
+          << std::setprecision(3) << shape_function_timer.wall_time() << " s"
+          << std::defaultfloat << std::endl;
   }
 
 
