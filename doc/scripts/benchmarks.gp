@@ -34,13 +34,19 @@ plot "data/B2-convergence.dat" using 1:2 with linespoints lw 2 pt 7 title "mpm-o
      [17:257] 5e-4/x**2 with lines dt 2 lc rgb "gray" title "second order"
 
 set output "figures/B5-convergence.png"
-set title "B5 small deformation: L2 displacement error at t = 0.02 (thesis Table 4.2)"
+set title "B5 small deformation: L2 displacement error at t = 0.02 (thesis Tables 4.2, 4.3)"
 set xlabel "h_x"
 set ylabel "L2 displacement error (thesis Eq. 4.4)"
-set key bottom right
+set key top left
+set yrange [5e-8:3e-2]
+set datafile missing "-"
 plot "data/B5-lagrange.dat" using 2:3 with linespoints lw 2 pt 7 title "mpm-otm, Lagrange MPM", \
      "data/B5-lagrange.dat" using 2:4 with points pt 6 ps 2 lc rgb "black" title "thesis Table 4.2", \
-     [0.7:7] 4.6e-6*x**2 with lines dt 2 lc rgb "gray" title "second order"
+     "data/B5-powell-sabin.dat" using 2:3 with linespoints lw 2 pt 5 title "mpm-otm, PS-MPM (56 points per triangle)", \
+     "data/B5-powell-sabin.dat" using 2:4 with points pt 4 ps 2 lc rgb "black" title "thesis Table 4.3", \
+     [0.7:7] 4.6e-6*x**2 with lines dt 2 lc rgb "gray" title "second order", \
+     [3:25] 1e-8*x**3 with lines dt 3 lw 1.5 lc rgb "black" title "third order"
+set autoscale y
 
 unset logscale
 set format y "%g"

@@ -175,6 +175,34 @@ end"
   done
 } > "$data/B5-lagrange.dat"
 
+echo "B5: PS-MPM L2 displacement error at t = 0.02, and its dependence on the point layout on fine grids"
+published=(3.70985e-04 3.13639e-05 3.56528e-06 4.90397e-07 1.76596e-07 -)
+{
+  echo "# n_x  h_x  L2_error  thesis_Table_4.3  (prm/B5-bar-2d-small-powell-sabin.prm)"
+  i=0
+  for nx in 2 3 5 9 17 33; do
+    run B5-bar-2d-small-powell-sabin.prm "subsection Mesh
+ set Subdivisions = $((nx - 1)), 1
+end"
+    echo "$nx $(awk "BEGIN{print 25/($nx-1)}") $(last 7) ${published[$i]}"
+    i=$((i + 1))
+  done
+} > "$data/B5-powell-sabin.dat"
+{
+  echo "# n_x  points_per_block_x  points_per_block_y  points_per_triangle  L2_error  (prm/B5-bar-2d-small-powell-sabin.prm;"
+  echo "# thesis Table 4.3 at n_x = 17: 56 points per triangle 1.76596e-07, 90 points per triangle 1.14682e-07)"
+  for layout in "17 16 14" "17 14 16" "17 18 20" "17 20 18" "17 32 28" "33 16 14" "33 32 28"; do
+    read -r nx px py <<< "$layout"
+    run B5-bar-2d-small-powell-sabin.prm "subsection Mesh
+ set Subdivisions = $((nx - 1)), 1
+end
+subsection Particles
+ set Particles per cell = $px, $py
+end"
+    echo "$nx $px $py $((px * py / 4)) $(last 7)"
+  done
+} > "$data/B5-powell-sabin-layout.dat"
+
 echo "B6: top displacement of the soil column (Lagrange and Powell-Sabin MPM)"
 # The top row of points of ./run against the exact series (BENCHMARKS.md B6).
 top_against_exact() {
