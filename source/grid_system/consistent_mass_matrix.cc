@@ -5,6 +5,7 @@
 #include <mpm_otm/grid_system/consistent_mass_matrix.h>
 
 #include <algorithm>
+#include <cmath>
 #include <iomanip>
 #include <sstream>
 
@@ -166,6 +167,128 @@ namespace MpmOtm
     private:
       const VectorType &lumped_mass;
     };
+
+
+
+    /**
+     * Block Jacobi preconditioner for families with several functions per
+     * node (ShapeFunctions::functions_per_node()): the inverse of each
+     * node's diagonal block of the mass matrix, which holds the strong
+     * coupling of functions with one support (a Powell-Sabin vertex's three
+     * functions are far from orthogonal, and a diagonal preconditioner
+     * leaves CG four times the iterations of the linear family). Excluded
+     * coefficients get the identity; a block that is not numerically
+     * positive definite gets its lumped masses.
+     */
+    template <int dim>
+    class NodeBlockPreconditioner
+    {
+    public:
+      using VectorType = typename NodalSystem<dim>::VectorType;
+
+      /**
+       * Factorize the blocks; @p block_entries[q] holds M_ij for every
+       * function i and j the function q of i's node.
+       */
+      NodeBlockPreconditioner(const std::vector<VectorType>   &block_entries,
+                              const VectorType                &lumped_mass,
+                              const std::vector<unsigned int> &excluded)
+        : block_size(block_entries.size())
+        , factors(lumped_mass.locally_owned_size() * block_size)
+      {
+        const unsigned int n_owned = lumped_mass.locally_owned_size();
+        Assert(n_owned % block_size == 0,
+               ExcMessage("A node's functions must have one owner."));
+        std::vector<bool> is_excluded(n_owned, false);
+        for (const unsigned int i : excluded)
+          is_excluded[i] = true;
+        const unsigned int n = block_size;
+        for (unsigned int start = 0; start < n_owned; start += n)
+          {
+            double *L = &factors[start * n];
+            for (unsigned int a = 0; a < n; ++a)
+              for (unsigned int b = 0; b < n; ++b)
+                L[a * n + b] =
+                  (is_excluded[start + a] || is_excluded[start + b]) ?
+                    (a == b ? 1. : 0.) :
+                    block_entries[b].local_element(start + a);
+            if (!cholesky(L))
+              for (unsigned int a = 0; a < n; ++a)
+                for (unsigned int b = 0; b < n; ++b)
+                  {
+                    const double m = lumped_mass.local_element(start + a);
+                    L[a * n + b] =
+                      (a != b) ?
+                        0. :
+                        ((m > 0. && !is_excluded[start + a]) ? std::sqrt(m) :
+                                                               1.);
+                  }
+          }
+      }
+
+      void
+      vmult(VectorType &dst, const VectorType &src) const
+      {
+        const unsigned int n = block_size;
+        for (unsigned int start = 0; start < dst.locally_owned_size();
+             start += n)
+          {
+            const double *L = &factors[start * n];
+            double       *x = dst.get_values() + start;
+            const double *y = src.get_values() + start;
+            // L L^T x = y: forward, then backward substitution.
+            for (unsigned int a = 0; a < n; ++a)
+              {
+                double sum = y[a];
+                for (unsigned int b = 0; b < a; ++b)
+                  sum -= L[a * n + b] * x[b];
+                x[a] = sum / L[a * n + a];
+              }
+            for (unsigned int a = n; a-- > 0;)
+              {
+                double sum = x[a];
+                for (unsigned int b = a + 1; b < n; ++b)
+                  sum -= L[b * n + a] * x[b];
+                x[a] = sum / L[a * n + a];
+              }
+          }
+      }
+
+    private:
+      /**
+       * Overwrite the lower triangle of the row-major block @p L with its
+       * Cholesky factor; false if a pivot is not clearly positive.
+       */
+      bool
+      cholesky(double *L) const
+      {
+        const unsigned int n                = block_size;
+        double             largest_diagonal = 0.;
+        for (unsigned int a = 0; a < n; ++a)
+          largest_diagonal = std::max(largest_diagonal, L[a * n + a]);
+        for (unsigned int a = 0; a < n; ++a)
+          {
+            for (unsigned int b = 0; b <= a; ++b)
+              {
+                double sum = L[a * n + b];
+                for (unsigned int c = 0; c < b; ++c)
+                  sum -= L[a * n + c] * L[b * n + c];
+                if (a == b)
+                  {
+                    if (!(sum > 1e-12 * largest_diagonal))
+                      return false;
+                    L[a * n + a] = std::sqrt(sum);
+                  }
+                else
+                  L[a * n + b] = sum / L[b * n + b];
+              }
+          }
+        return true;
+      }
+
+      const unsigned int  block_size;
+      std::vector<double> factors;
+    };
   } // namespace
 
 
@@ -214,29 +337,108 @@ namespace MpmOtm
     // The matrix pays when a product with it (at most one entry per pair of
     // functions of a group) is cheaper than a point pass.
     use_matrix = block_cost < point_pass_cost;
-    if (!use_matrix)
-      return;
+    if (use_matrix)
+      assemble_matrix(system, shape_data, previous_offsets, previous_indices);
+    if (system.functions_per_node() > 1)
+      assemble_node_blocks(system, shape_data);
+    else
+      node_block_entries.clear();
+  }
+
+
+
+  template <int dim>
+  void
+  ConsistentMassMatrix<dim>::assemble_matrix(
+    const NodalSystem<dim>          &system,
+    const ParticleShapeData<dim>    &shape_data,
+    const std::vector<unsigned int> &previous_offsets,
+    const std::vector<unsigned int> &previous_indices)
+  {
     if (group_offsets != previous_offsets || group_indices != previous_indices)
       build_sparsity(system.partitioner().locally_owned_size() +
                      system.partitioner().n_ghost_indices());
 
-    // Sum m_p phi_a phi_b of each point into its group's entries.
+    // Sum m_p phi_a phi_b over the points of each group (a run of
+    // consecutive points) into a dense block, its upper triangle, then add
+    // the block to the matrix entries.
     entries.assign(columns.size(), 0.);
-    for (unsigned int k = 0; k < shape_data.n_particles(); ++k)
+    for (unsigned int k = 0; k < shape_data.n_particles();)
       {
-        const unsigned int  begin = shape_data.offsets[k];
-        const unsigned int  n     = shape_data.offsets[k + 1] - begin;
-        const unsigned int *position =
-          &entry_of_block[block_offsets[group_of_point[k]]];
-        const double  m   = system.particle_mass[k];
-        const double *phi = &shape_data.values[begin];
+        const unsigned int group = group_of_point[k];
+        const unsigned int n = group_offsets[group + 1] - group_offsets[group];
+        group_block.assign(n * n, 0.);
+        for (; k < shape_data.n_particles() && group_of_point[k] == group; ++k)
+          {
+            const double  m   = system.particle_mass[k];
+            const double *phi = &shape_data.values[shape_data.offsets[k]];
+            for (unsigned int a = 0; a < n; ++a)
+              {
+                const double m_phi = m * phi[a];
+                double      *row   = &group_block[a * n];
+                for (unsigned int b = a; b < n; ++b)
+                  row[b] += m_phi * phi[b];
+              }
+          }
+        const unsigned int *position = &entry_of_block[block_offsets[group]];
         for (unsigned int a = 0; a < n; ++a)
           {
-            const double m_phi = m * phi[a];
-            for (unsigned int b = 0; b < n; ++b)
-              entries[position[a * n + b]] += m_phi * phi[b];
+            entries[position[a * n + a]] += group_block[a * n + a];
+            for (unsigned int b = a + 1; b < n; ++b)
+              {
+                entries[position[a * n + b]] += group_block[a * n + b];
+                entries[position[b * n + a]] += group_block[a * n + b];
+              }
           }
       }
+  }
+
+
+
+  template <int dim>
+  void
+  ConsistentMassMatrix<dim>::assemble_node_blocks(
+    const NodalSystem<dim>       &system,
+    const ParticleShapeData<dim> &shape_data)
+  {
+    const unsigned int                 n = system.functions_per_node();
+    const Utilities::MPI::Partitioner &partitioner = system.partitioner();
+    const unsigned int                 n_local =
+      partitioner.locally_owned_size() + partitioner.n_ghost_indices();
+    global_of_local.resize(n_local);
+    for (unsigned int i = 0; i < n_local; ++i)
+      global_of_local[i] = partitioner.local_to_global(i);
+
+    node_block_entries.resize(n);
+    for (VectorType &entries_q : node_block_entries)
+      {
+        if (entries_q.get_partitioner() != system.lumped_mass.get_partitioner())
+          entries_q.reinit(system.lumped_mass.get_partitioner());
+        entries_q = 0.;
+      }
+    const auto add =
+      [&](const unsigned int i, const unsigned int j, const double value) {
+        if (global_of_local[i] / n == global_of_local[j] / n)
+          node_block_entries[global_of_local[j] % n].local_element(i) += value;
+      };
+    if (use_matrix)
+      for (unsigned int row = 0; row + 1 < row_offsets.size(); ++row)
+        for (unsigned int e = row_offsets[row]; e < row_offsets[row + 1]; ++e)
+          add(row, columns[e], entries[e]);
+    else
+      for (unsigned int k = 0; k < shape_data.n_particles(); ++k)
+        {
+          const unsigned int  begin   = shape_data.offsets[k];
+          const unsigned int  end     = shape_data.offsets[k + 1];
+          const double        m       = system.particle_mass[k];
+          const double       *phi     = &shape_data.values[0];
+          const unsigned int *indices = &shape_data.indices[0];
+          for (unsigned int a = begin; a < end; ++a)
+            for (unsigned int b = begin; b < end; ++b)
+              add(indices[a], indices[b], m * phi[a] * phi[b]);
+        }
+    for (VectorType &entries_q : node_block_entries)
+      entries_q.compress(VectorOperation::add);
   }
 
 
@@ -375,24 +577,31 @@ namespace MpmOtm
     for (const unsigned int i : excluded)
       solution.local_element(i) = 0.;
 
-    const LumpedMassPreconditioner<dim> preconditioner(system.lumped_mass);
     SolverControl        control(1000, 1e-13 * norm, false, false);
     SolverCG<VectorType> cg(control);
+    const auto           solve_with = [&](const auto &preconditioner) {
+      if (use_matrix)
+        cg.solve(
+          SparseMassOperator<dim>(row_offsets, columns, entries, excluded),
+          solution,
+          rhs,
+          preconditioner);
+      else
+        cg.solve(ParticleMassOperator<dim>(shape_data,
+                                           system.particle_mass,
+                                           excluded),
+                 solution,
+                 rhs,
+                 preconditioner);
+    };
     try
       {
-        if (use_matrix)
-          cg.solve(
-            SparseMassOperator<dim>(row_offsets, columns, entries, excluded),
-            solution,
-            rhs,
-            preconditioner);
+        if (node_block_entries.empty())
+          solve_with(LumpedMassPreconditioner<dim>(system.lumped_mass));
         else
-          cg.solve(ParticleMassOperator<dim>(shape_data,
-                                             system.particle_mass,
-                                             excluded),
-                   solution,
-                   rhs,
-                   preconditioner);
+          solve_with(NodeBlockPreconditioner<dim>(node_block_entries,
+                                                  system.lumped_mass,
+                                                  excluded));
       }
     catch (const SolverControl::NoConvergence &failure)
       {

@@ -69,6 +69,15 @@ namespace MpmOtm
 
 
   template <int dim>
+  unsigned int
+  NodalSystem<dim>::functions_per_node() const
+  {
+    return shape_functions->functions_per_node();
+  }
+
+
+
+  template <int dim>
   void
   NodalSystem<dim>::assemble(const MaterialPoints<dim>    &material_points,
                              const ParticleShapeData<dim> &shape_data,

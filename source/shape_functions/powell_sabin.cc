@@ -825,6 +825,15 @@ namespace MpmOtm
 
 
   template <int dim>
+  unsigned int
+  PowellSabin<dim>::functions_per_node() const
+  {
+    return 3;
+  }
+
+
+
+  template <int dim>
   void
   PowellSabin<dim>::functions_on_cell(
     const typename Triangulation<dim>::active_cell_iterator &cell,

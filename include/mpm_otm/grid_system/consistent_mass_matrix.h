@@ -7,7 +7,9 @@ namespace MpmOtm
 {
   /**
    * The consistent mass matrix (journal Eq. 19), solved with conjugate
-   * gradients preconditioned by the lumped masses. Points with the same
+   * gradients preconditioned by the lumped masses, or, for families with
+   * several functions per node (Powell-Sabin), by the inverses of the
+   * nodes' diagonal blocks. Points with the same
    * functions (the points of one cell, for every family) form a group; the
    * entries sum_p m_p phi_i phi_j are summed once per step into one matrix in
    * compressed rows on the locally stored coefficients, whose pattern (the
@@ -66,6 +68,23 @@ namespace MpmOtm
 
   private:
     /**
+     * Sum the entries of the matrix from the points, rebuilding its pattern
+     * if the groups differ from @p previous_offsets and @p previous_indices.
+     */
+    void
+    assemble_matrix(const NodalSystem<dim>          &system,
+                    const ParticleShapeData<dim>    &shape_data,
+                    const std::vector<unsigned int> &previous_offsets,
+                    const std::vector<unsigned int> &previous_indices);
+
+    /**
+     * Fill node_block_entries, summed over the ranks.
+     */
+    void
+    assemble_node_blocks(const NodalSystem<dim>       &system,
+                         const ParticleShapeData<dim> &shape_data);
+
+    /**
      * The compressed rows of the matrix on @p n_rows locally stored
      * coefficients and, for every entry of every group's block, the matrix
      * entry it adds to.
@@ -90,6 +109,13 @@ namespace MpmOtm
     std::vector<unsigned int> row_offsets;
     std::vector<unsigned int> columns;
     std::vector<double>       entries;
+    /// One group's dense block while its points are summed (reused).
+    std::vector<double> group_block;
+    /// Global index of every local coefficient, for the node blocks.
+    std::vector<types::global_dof_index> global_of_local;
+    /// With n > 1 functions per node: entry i of vector q is M_ij with j
+    /// the function q of i's node; empty otherwise.
+    std::vector<VectorType> node_block_entries;
   };
 } // namespace MpmOtm
 

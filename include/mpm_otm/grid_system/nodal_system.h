@@ -60,6 +60,12 @@ namespace MpmOtm
     partitioner() const;
 
     /**
+     * The shape functions' ShapeFunctions::functions_per_node().
+     */
+    unsigned int
+    functions_per_node() const;
+
+    /**
      * Start the assembly of lumped masses sum_p m_p phi_i (journal Eq. 17),
      * momenta (Eq. 20) and forces f_i = sum_p [phi_i (m_p b + t_p) - V_p
      * sigma_p grad phi_i] (Eq. 21 and thesis Eq. 2.28) at @p time. The

@@ -136,6 +136,13 @@ namespace MpmOtm
     bool
     is_linearly_complete() const override;
 
+    /**
+     * 3: function q of vertex v has the global index 3 i + q (i the vertex's
+     * index in the FE_SimplexP(1) numbering).
+     */
+    unsigned int
+    functions_per_node() const override;
+
     void
     functions_on_cell(
       const typename Triangulation<dim>::active_cell_iterator &cell,

@@ -97,6 +97,19 @@ namespace MpmOtm
     is_linearly_complete() const = 0;
 
     /**
+     * Number of functions that belong to one node and share its support:
+     * functions n k, ..., n k + n - 1 (global indices) are node k's and have
+     * one owner. They are strongly coupled in the mass matrix, and the
+     * consistent-mass solves precondition with the inverse of their diagonal
+     * blocks. 1 unless a family says otherwise.
+     */
+    virtual unsigned int
+    functions_per_node() const
+    {
+      return 1;
+    }
+
+    /**
      * Global indices of the functions that do not vanish everywhere on
      * @p cell (a locally owned or ghost cell); with or without material.
      * Partial lumping (thesis Sect. 5.4) finds the functions at the edge of
