@@ -16,12 +16,12 @@
 //   candidate nodes, or the R-tree for a point that has left its cell's
 //   bounding box, as OTM points may) equals the evaluation point by point
 //   (evaluate_at()), and the padded functions of a cell's list are zero;
-// - on nodes of the hull's boundary (the end nodes in 1D; a side node and a
-//   corner in 2D), reached with first guesses from elsewhere: the functions
-//   of the nodes off the boundary vanish (weak Kronecker delta; in 1D the
-//   end node's function is 1), and the gradients are the limits from
-//   inside. In 1D these are exact: next to an end node x_e, at distance
-//   delta inside, linear reproduction sum_k phi_k (x_k - x) = 0 leaves
+// - on nodes of the hull's boundary (the end nodes in 1D; a face node and a
+//   corner in 2D and 3D, and an edge node in 3D), reached with first guesses
+//   from elsewhere: the functions of the nodes off the boundary vanish (weak
+//   Kronecker delta; in 1D the end node's function is 1), and the gradients are
+//   the limits from inside. In 1D these are exact: next to an end node x_e, at
+//   distance delta inside, linear reproduction sum_k phi_k (x_k - x) = 0 leaves
 //   phi_n = delta / h + O(delta^2) for the neighbour x_n at distance h, and
 //   the functions beyond it are O(delta^2), so d phi_n / dx = -d phi_e / dx
 //   = 1 / (x_n - x_e), whatever the prior. Checked against these values and
@@ -303,9 +303,70 @@ namespace
 
 
   /**
+   * Max-ent functions with d_max = 2 on nodes of the unit box's boundary:
+   * in the middle of the face x_0 = 0, on the edge x_0 = x_1 = 0 (3D) and
+   * at the corner 0. Gradients against one-sided finite differences and
+   * the consistency identities (sum grad phi = 0, sum x_i grad phi_i = I);
+   * the functions of the nodes off the node's face, edge or corner vanish
+   * (weak Kronecker delta).
+   */
+  template <int dim>
+  void
+  check_boundary_nodes_on_box(const unsigned int n_cells)
+  {
+    auto simulator =
+      make_unit_box_simulator<dim>(n_cells, "output-max-ent-grid");
+    MaxEnt<dim> functions(2.);
+    functions.initialize(simulator->background_grid());
+    std::vector<types::global_dof_index> indices;
+    std::vector<double>                  values;
+    std::vector<Tensor<1, dim>>          gradients;
+    Tensor<1, dim>                       inward;
+    Point<dim>                           far_corner;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        inward[d]     = 1.;
+        far_corner[d] = 1.;
+      }
+    double deviation = 0;
+    // The node with the first n_zero coordinates 0 and the others 0.5.
+    for (unsigned int n_zero = 1; n_zero <= dim; ++n_zero)
+      {
+        Point<dim> x;
+        for (unsigned int d = n_zero; d < dim; ++d)
+          x[d] = 0.5;
+        check(
+          functions.evaluate_at(far_corner, indices, values, gradients).empty(),
+          "evaluation at the far corner failed");
+        deviation = std::max(deviation,
+                             boundary_deviation(functions,
+                                                x,
+                                                inward,
+                                                1. / n_cells,
+                                                indices,
+                                                values,
+                                                gradients));
+        for (unsigned int k = 0; k < indices.size(); ++k)
+          for (unsigned int d = 0; d < n_zero; ++d)
+            if (functions.node(indices[k])[d] > 1e-12)
+              deviation = std::max(deviation, values[k]);
+      }
+    deallog << dim << "D, " << n_cells << " cells per direction, on a face node"
+            << (dim == 3 ? ", an edge node" : "")
+            << " and a corner node: functions off them vanish, gradients "
+               "against one-sided finite differences and the consistency "
+               "identities to 1e-5/h "
+            << (deviation < 1e-5) << std::endl;
+    check(deviation < 1e-5,
+          std::to_string(dim) + "D boundary nodes: " + rounded(deviation));
+  }
+
+
+
+  /**
    * Max-ent functions exactly on nodes of the hull's boundary: 1D end nodes
    * against the exact limits (see the top of the file), a side node and a
-   * corner in 2D against one-sided finite differences. Each point is
+   * corner in 2D and 3D against one-sided finite differences. Each point is
    * evaluated right after a point elsewhere, whose multipliers are the
    * first guess (from the other end they are far off: this once gave H = 0
    * and NaN gradients).
@@ -384,43 +445,8 @@ namespace
                 rounded(fd_error));
       }
 
-    // 2D: a node on the side x = 0 and the corner (0, 0).
-    const unsigned int n_cells = 6;
-    auto simulator = make_unit_box_simulator<2>(n_cells, "output-max-ent-grid");
-    MaxEnt<2> functions(2.);
-    functions.initialize(simulator->background_grid());
-    std::vector<types::global_dof_index> indices_2d;
-    std::vector<double>                  values_2d;
-    std::vector<Tensor<1, 2>>            gradients_2d;
-    double                               deviation = 0;
-    for (const Point<2> &x : {Point<2>(0., 0.5), Point<2>(0., 0.)})
-      {
-        check(
-          functions
-            .evaluate_at(Point<2>(1., 1.), indices_2d, values_2d, gradients_2d)
-            .empty(),
-          "evaluation at the far corner failed");
-        deviation = std::max(deviation,
-                             boundary_deviation(functions,
-                                                x,
-                                                Tensor<1, 2>({1., 1.}),
-                                                1. / n_cells,
-                                                indices_2d,
-                                                values_2d,
-                                                gradients_2d));
-        // Weak Kronecker delta: the functions of the nodes off the side
-        // x = 0 vanish on it (at the corner, all but the corner's).
-        for (unsigned int k = 0; k < indices_2d.size(); ++k)
-          if (functions.node(indices_2d[k])[0] > 1e-12 ||
-              (x[1] == 0. && functions.node(indices_2d[k])[1] > 1e-12))
-            deviation = std::max(deviation, values_2d[k]);
-      }
-    deallog << "2D, on a side node and a corner node: functions off the "
-               "side vanish, gradients "
-               "against one-sided finite differences and the consistency "
-               "identities to 1e-5/h "
-            << (deviation < 1e-5) << std::endl;
-    check(deviation < 1e-5, "2D boundary nodes: " + rounded(deviation));
+    check_boundary_nodes_on_box<2>(6);
+    check_boundary_nodes_on_box<3>(4);
   }
 
 
