@@ -117,6 +117,28 @@ plot "data/B2-profile-otm.dat" using 1:3 with lines lw 3 lc rgb "gray" title "ex
      "data/B2-profile-mpm-maxent.dat" using 1:2 with points pt 11 ps 0.6 lc rgb "orange" title "mpm-otm, MPM-maxent d_{max} = 2", \
      "data/B2-profile-otm-maxent.dat" using 1:2 with points pt 13 ps 0.6 lc rgb "purple" title "mpm-otm, OTM-maxent d_{max} = 2"
 
+set output "figures/B5-history.png"
+set multiplot layout 2,1 title "B5 small deformation: middle of the bar (thesis Figs. 4.3 left and 4.5)"
+set title ""
+set xlabel "t (s)"
+set ylabel "u_x (m)"
+# Room below the curves for the key.
+set xrange [0:15]
+set yrange [-0.18:0.09]
+set key bottom center horizontal maxrows 2
+plot "data/B5-history.dat" using 1:2 with lines lw 3 lc rgb "gray" title "exact", \
+     "data/B5-history.dat" using 1:4 with lines lw 1.5 lc rgb "red" title "mpm-otm, Lagrange MPM 12 x 1 blocks, 38 functions", \
+     "data/B5-history.dat" using 1:6 with lines lw 1.5 dt 2 lc rgb "dark-green" title "mpm-otm, Powell-Sabin MPM 4 x 1 blocks, 42 functions"
+set ylabel "v_x (m/s)"
+set yrange [-0.19:0.12]
+plot "data/B5-history.dat" using 1:3 with lines lw 3 lc rgb "gray" title "exact", \
+     "data/B5-history.dat" using 1:5 with lines lw 1.5 lc rgb "red" title "mpm-otm, Lagrange MPM", \
+     "data/B5-history.dat" using 1:7 with lines lw 1.5 dt 2 lc rgb "dark-green" title "mpm-otm, Powell-Sabin MPM"
+unset multiplot
+unset xrange
+unset yrange
+set key default
+
 set output "figures/B5-large.png"
 set multiplot layout 2,1 title "B5 large deformation: middle of the bar (thesis Figs. 4.7 and 4.8)"
 set title ""

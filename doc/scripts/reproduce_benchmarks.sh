@@ -203,6 +203,17 @@ end"
   done
 } > "$data/B5-powell-sabin-layout.dat"
 
+echo "B5 small deformation over three periods: middle of the bar, Lagrange and Powell-Sabin MPM"
+run B5-bar-2d-small-history.prm ""
+track middle 1e-3 12.5 0.16 > lagrange.dat
+run B5-bar-2d-small-history-powell-sabin.prm ""
+track middle 1e-3 12.5 0.16 > powell-sabin.dat
+{
+  echo "# time  u_exact  v_exact  u_MPM  v_MPM  u_PS_MPM  v_PS_MPM  (points within 0.16 of the middle X = 12.5, exact at X = 12.5, 1.3e-4 of it from theirs; prm/B5-bar-2d-small-history.prm, prm/B5-bar-2d-small-history-powell-sabin.prm)"
+  paste -d' ' lagrange.dat <(cut -d' ' -f2,3 powell-sabin.dat) |
+    awk '{ w = 3.14159265358979 * 10 / 25; print $1, 0.1 / w * sin(w * $1), 0.1 * cos(w * $1), $2, $3, $4, $5 }'
+} > "$data/B5-history.dat"
+
 echo "B6: top displacement of the soil column (Lagrange and Powell-Sabin MPM)"
 # The top row of points of ./run against the exact series (BENCHMARKS.md B6).
 top_against_exact() {
