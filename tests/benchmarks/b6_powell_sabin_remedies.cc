@@ -4,7 +4,8 @@
 // the top cells empty and the consistent mass matrix becomes
 // ill-conditioned (Sect. 5.1); the published behaviour of each remedy:
 // - consistent: unstable at about t = 0.1 s (Sect. 5.2, Fig. 5.3): the run
-//   must stop with the step, time and point;
+//   must stop with the step, time and point; also on 2 x 16 (+1) blocks,
+//   the grid of the thesis's first instability (Fig. 4.11c);
 // - partially lumped (Sect. 5.4): stable, the displacement of the top
 //   "almost indistinguishable" from the reference, the velocity close;
 // - lumped (Sect. 5.3): stable, with displacement and velocity errors not
@@ -92,6 +93,41 @@ namespace
             << rounded(deviation[1], 1) << std::endl;
     return deviation;
   }
+
+
+  // The time at which the consistent run with @p changes stops as unstable;
+  // the test fails if it does not stop, or without step and point.
+  double
+  consistent_stop_time(const std::string &grid, const std::string &changes)
+  {
+    auto simulator =
+      make_simulator<2>("B6-soil-column-large-powell-sabin-remedies.prm",
+                        common_2d + "set Mass matrix = consistent\n" + changes,
+                        "output-consistent");
+    std::string message;
+    try
+      {
+        simulator->run();
+      }
+    catch (const std::exception &error)
+      {
+        // deal.II wraps the text of an exception: join it into one line.
+        std::istringstream words(error.what());
+        for (std::string word; words >> word;)
+          message += word + " ";
+      }
+    check(message.find("Stopped in time step") != std::string::npos &&
+            message.find("became unstable: material point") !=
+              std::string::npos,
+          "the consistent run on " + grid +
+            " must stop as unstable, naming step and point; it said: '" +
+            message + "'");
+    const double time = std::stod(message.substr(message.find("(t = ") + 5));
+    deallog << "consistent, " << grid
+            << ": stopped as unstable at t = " << rounded(time, 1) << " s"
+            << std::endl;
+    return time;
+  }
 } // namespace
 
 
@@ -114,38 +150,23 @@ main(int argc, char **argv)
                       "output-reference");
   const auto reference = top_history(*reference_run, 0.99);
 
-  // Consistent: the run must stop, naming the step, the time and the point.
-  {
-    auto simulator =
-      make_simulator<2>("B6-soil-column-large-powell-sabin-remedies.prm",
-                        common_2d + "set Mass matrix = consistent\n",
-                        "output-consistent");
-    std::string message;
-    try
-      {
-        simulator->run();
-      }
-    catch (const std::exception &error)
-      {
-        // deal.II wraps the text of an exception: join it into one line.
-        std::istringstream words(error.what());
-        for (std::string word; words >> word;)
-          message += word + " ";
-      }
-    check(message.find("Stopped in time step") != std::string::npos &&
-            message.find("became unstable: material point") !=
-              std::string::npos,
-          "the consistent run must stop as unstable, naming step and point; "
-          "it said: '" +
-            message + "'");
-    const double time = std::stod(message.substr(message.find("(t = ") + 5));
-    deallog << "consistent: stopped as unstable at t = " << rounded(time, 1)
-            << " s" << std::endl;
-    check(time > 0.05 && time < 0.2,
-          "the consistent run must become unstable near t = 0.1 s (thesis "
-          "Sect. 5.2), not at t = " +
-            std::to_string(time));
-  }
+  // Consistent: the run must stop, naming the step, the time and the point,
+  // on 1 x 8 (+1) blocks and on 2 x 16 (+1) blocks (6 x 6 points per block).
+  const double time_1x8 = consistent_stop_time("1 x 8 (+1) blocks", "");
+  check(time_1x8 > 0.05 && time_1x8 < 0.2,
+        "the consistent run on 1 x 8 blocks must become unstable near "
+        "t = 0.1 s (thesis Sect. 5.2), not at t = " +
+          std::to_string(time_1x8));
+  const double time_2x16 =
+    consistent_stop_time("2 x 16 (+1) blocks",
+                         "subsection Mesh\n set Upper corner = 0.1, 1.0625\n"
+                         " set Subdivisions = 2, 17\nend\n"
+                         "subsection Particles\n"
+                         " set Particles per cell = 6, 6\nend\n");
+  check(time_2x16 < 0.2,
+        "the consistent run on 2 x 16 blocks must become unstable while the "
+        "column first sinks (thesis Fig. 4.11c), not at t = " +
+          std::to_string(time_2x16));
 
   const auto partial = deviation(reference, "partially-lumped", "");
   check(partial[0] < 0.02 && partial[1] < 0.1,
