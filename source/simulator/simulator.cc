@@ -36,9 +36,15 @@ namespace MpmOtm
     {
       if (const auto *exception = dynamic_cast<const ExceptionBase *>(&error))
         {
+          // print_info() indents the text and ends it with a new line.
           std::ostringstream text;
           exception->print_info(text);
-          return text.str();
+          const std::string info  = text.str();
+          const auto        begin = info.find_first_not_of(" \n");
+          const auto        end   = info.find_last_not_of(" \n");
+          return (begin == std::string::npos) ?
+                   std::string() :
+                   info.substr(begin, end - begin + 1);
         }
       return error.what();
     }
@@ -351,71 +357,81 @@ namespace MpmOtm
   Simulator<dim>::run(
     const std::function<void(unsigned int, const Statistics<dim> &)> &observer)
   {
-    TimerOutput      timer(communicator,
-                      pcout,
-                      TimerOutput::summary,
-                      TimerOutput::wall_times);
-    TimeStepper<dim> stepper(*points,
-                             *shape_functions,
-                             *system,
-                             *mass_matrix,
-                             *nodal_update,
-                             *grid_motion,
-                             *material,
-                             *problem_description,
-                             timer);
-
-    AssertThrow(end_time / time_step < 1e9,
-                ExcMessage("Time/End time / Time/Time step is above 1e9 time "
-                           "steps; check both entries."));
-    const unsigned int n_steps =
-      static_cast<unsigned int>(std::ceil(end_time / time_step - 1e-8));
-    Timer           wall_clock(communicator, true);
     Statistics<dim> statistics;
+    // A step that fails ends the loop with this message, thrown once the
+    // timer is gone: deal.II's TimerOutput prints a notice in front of the
+    // error if it is destroyed while an exception is in flight.
+    std::string stop_message;
+    {
+      TimerOutput      timer(communicator,
+                        pcout,
+                        TimerOutput::summary,
+                        TimerOutput::wall_times);
+      TimeStepper<dim> stepper(*points,
+                               *shape_functions,
+                               *system,
+                               *mass_matrix,
+                               *nodal_update,
+                               *grid_motion,
+                               *material,
+                               *problem_description,
+                               timer);
 
-    const auto report = [&](const unsigned int step) {
-      TimerOutput::Scope scope(timer, "output");
-      statistics.compute(*points,
-                         *material,
-                         *problem_description,
-                         current_time);
-      output->write(step,
-                    current_time,
-                    *points,
-                    *grid,
-                    *shape_functions,
-                    *system,
-                    statistics);
-      pcout << "step " << std::setw(7) << step << "  t = " << std::scientific
-            << std::setprecision(4) << current_time
-            << "  kinetic energy = " << statistics.kinetic_energy
-            << "  wall time = " << std::fixed << std::setprecision(2)
-            << wall_clock.wall_time() << " s" << std::defaultfloat << std::endl;
-      if (observer)
-        observer(step, statistics);
-    };
+      AssertThrow(end_time / time_step < 1e9,
+                  ExcMessage("Time/End time / Time/Time step is above 1e9 time "
+                             "steps; check both entries."));
+      const unsigned int n_steps =
+        static_cast<unsigned int>(std::ceil(end_time / time_step - 1e-8));
+      Timer wall_clock(communicator, true);
 
-    report(0);
-    for (unsigned int step = 1; step <= n_steps; ++step)
-      {
-        const double dt = std::min(time_step, end_time - current_time);
-        try
-          {
-            stepper.advance(current_time, dt);
-          }
-        catch (const std::exception &error)
-          {
-            std::ostringstream message;
-            message << "Stopped in time step " << step
-                    << " (t = " << current_time << " to " << current_time + dt
-                    << "); the output up to the last output step is in <"
-                    << output->directory() << ">. " << message_of(error);
-            AssertThrow(false, ExcMessage(message.str()));
-          }
-        current_time = (step == n_steps) ? end_time : current_time + dt;
-        if (output->is_output_step(step, step == n_steps))
-          report(step);
-      }
+      const auto report = [&](const unsigned int step) {
+        TimerOutput::Scope scope(timer, "output");
+        statistics.compute(*points,
+                           *material,
+                           *problem_description,
+                           current_time);
+        output->write(step,
+                      current_time,
+                      *points,
+                      *grid,
+                      *shape_functions,
+                      *system,
+                      statistics);
+        pcout << "step " << std::setw(7) << step << "  t = " << std::scientific
+              << std::setprecision(4) << current_time
+              << "  kinetic energy = " << statistics.kinetic_energy
+              << "  wall time = " << std::fixed << std::setprecision(2)
+              << wall_clock.wall_time() << " s" << std::defaultfloat
+              << std::endl;
+        if (observer)
+          observer(step, statistics);
+      };
+
+      report(0);
+      for (unsigned int step = 1; step <= n_steps; ++step)
+        {
+          const double dt = std::min(time_step, end_time - current_time);
+          try
+            {
+              stepper.advance(current_time, dt);
+            }
+          catch (const std::exception &error)
+            {
+              std::ostringstream message;
+              message << "Stopped in time step " << step
+                      << " (t = " << current_time << " to " << current_time + dt
+                      << "); the output up to the last output step is in <"
+                      << output->directory() << ">. " << message_of(error);
+              stop_message = message.str();
+              timer.disable_output();
+              break;
+            }
+          current_time = (step == n_steps) ? end_time : current_time + dt;
+          if (output->is_output_step(step, step == n_steps))
+            report(step);
+        }
+    }
+    AssertThrow(stop_message.empty(), ExcMessage(stop_message));
     return statistics;
   }
 
