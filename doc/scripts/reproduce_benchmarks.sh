@@ -276,21 +276,14 @@ done
   paste -d' ' reference.dat <(cut -d' ' -f2,3 partially-lumped.dat) <(cut -d' ' -f2,3 lumped.dat) \
     <(cut -d' ' -f2,3 deactivated.dat) <(cut -d' ' -f2,3 deactivated-1e-3.dat)
 } > "$data/B6-remedies.dat"
-# The same remedies on 2 x 16 (+1) blocks, 6 x 6 points per block.
-two_by_sixteen="subsection Mesh
- set Upper corner = 0.1, 1.0625
- set Subdivisions = 2, 17
-end
-subsection Particles
- set Particles per cell = 6, 6
-end"
+# The same remedies on 2 x 16 (+1) blocks.
+prm_2x16=B6-soil-column-large-powell-sabin-remedies-2x16.prm
 for remedy in "partially-lumped:" "lumped:set Mass matrix = lumped"; do
-  run $prm "${remedy#*:}
-$two_by_sixteen"
+  run $prm_2x16 "${remedy#*:}"
   track top 1e-4 > "${remedy%%:*}-2x16.dat"
 done
 {
-  echo "# time  u_reference  v_reference  then u, v of the top for: partially lumped, lumped  (prm/$prm on 2 x 16 (+1) blocks, 6 x 6 points per block)"
+  echo "# time  u_reference  v_reference  then u, v of the top for: partially lumped, lumped  (prm/$prm_2x16)"
   paste -d' ' reference.dat <(cut -d' ' -f2,3 partially-lumped-2x16.dat) <(cut -d' ' -f2,3 lumped-2x16.dat)
 } > "$data/B6-remedies-2x16.dat"
 # Largest deviations from the reference, relative to its largest value, of
@@ -314,11 +307,9 @@ largest_deviations() {
 # The consistent mass matrix: the run stops; keep where, on 1 x 8 (+1) and
 # on 2 x 16 (+1) blocks.
 {
-  for grid in "1 x 8 (+1)" "2 x 16 (+1)"; do
-    if [ "$grid" = "1 x 8 (+1)" ]; then extra=""; else extra=$two_by_sixteen; fi
-    run $prm "set Mass matrix = consistent
-$extra" 2> consistent.txt || true
-    echo "$grid blocks: $(tr -s ' \n' ' ' < consistent.txt | grep -o 'Stopped in time step [0-9]* (t = [0-9.e-]* to [0-9.e-]*)')"
+  for entry in "1 x 8 (+1):$prm" "2 x 16 (+1):$prm_2x16"; do
+    run "${entry#*:}" "set Mass matrix = consistent" 2> consistent.txt || true
+    echo "${entry%%:*} blocks: $(tr -s ' \n' ' ' < consistent.txt | grep -o 'Stopped in time step [0-9]* (t = [0-9.e-]* to [0-9.e-]*)')"
   done
 } > "$data/B6-remedies-consistent.txt"
 
