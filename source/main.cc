@@ -3,6 +3,7 @@
 #include <mpm_otm/simulator/simulator.h>
 
 #include <chrono>
+#include <fstream>
 #include <iostream>
 #include <sstream>
 #include <thread>
@@ -17,8 +18,18 @@ namespace
   void
   run(const std::string &filename)
   {
+    std::string text;
+    if (!filename.empty())
+      {
+        std::ifstream     file(filename);
+        std::stringstream contents;
+        contents << file.rdbuf();
+        text = contents.str();
+      }
     dealii::ParameterHandler prm;
-    MpmOtm::Simulator<dim>::declare_parameters(prm);
+    MpmOtm::Simulator<dim>::declare_parameters(prm,
+                                               MpmOtm::SubsectionNames::read(
+                                                 text));
     if (!filename.empty())
       prm.parse_input(filename);
     MpmOtm::Simulator<dim> simulator(MPI_COMM_WORLD, std::cout);
@@ -81,14 +92,20 @@ main(int argc, char *argv[])
         }
       if (argument == "--print-parameters")
         {
-          const int                dim = (argc > 2) ? std::atoi(argv[2]) : 2;
+          const int dim = (argc > 2) ? std::atoi(argv[2]) : 2;
+          // One subsection of each named kind, called "example", stands for
+          // those the entries Materials, Bodies and Boundaries name.
+          MpmOtm::SubsectionNames examples;
+          examples.materials  = {"example"};
+          examples.bodies     = {"example"};
+          examples.boundaries = {"example"};
           dealii::ParameterHandler prm;
           if (dim == 1)
-            MpmOtm::Simulator<1>::declare_parameters(prm);
+            MpmOtm::Simulator<1>::declare_parameters(prm, examples);
           else if (dim == 3)
-            MpmOtm::Simulator<3>::declare_parameters(prm);
+            MpmOtm::Simulator<3>::declare_parameters(prm, examples);
           else
-            MpmOtm::Simulator<2>::declare_parameters(prm);
+            MpmOtm::Simulator<2>::declare_parameters(prm, examples);
           if (root)
             prm.print_parameters(std::cout, dealii::ParameterHandler::Text);
           return 0;

@@ -81,8 +81,18 @@ namespace MpmOtmTests
                  const MPI_Comm     communicator = MPI_COMM_WORLD)
   {
     static std::ostringstream quiet;
-    ParameterHandler          prm;
-    MpmOtm::Simulator<dim>::declare_parameters(prm);
+    std::string               text;
+    if (!name.empty())
+      {
+        std::ifstream     file(prm_file(name));
+        std::stringstream contents;
+        contents << file.rdbuf();
+        text = contents.str();
+      }
+    ParameterHandler prm;
+    MpmOtm::Simulator<dim>::declare_parameters(prm,
+                                               MpmOtm::SubsectionNames::read(
+                                                 text + "\n" + changes));
     if (!name.empty())
       prm.parse_input(prm_file(name));
     prm.parse_input_from_string(changes +

@@ -12,7 +12,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 
-#include <mpm_otm/grid_system/background_grid.h>
+#include <mpm_otm/grid/background_grid.h>
 #include <mpm_otm/shape_functions/max_ent.h>
 
 #include <cmath>

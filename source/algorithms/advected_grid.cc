@@ -1,6 +1,6 @@
 #include <mpm_otm/algorithms/advected_grid.h>
 #include <mpm_otm/base/collective_error.h>
-#include <mpm_otm/grid_system/background_grid.h>
+#include <mpm_otm/grid/background_grid.h>
 #include <mpm_otm/problems/problem.h>
 #include <mpm_otm/shape_functions/shape_functions.h>
 

@@ -1,6 +1,6 @@
 #include <mpm_otm/algorithms/advected_knots.h>
 #include <mpm_otm/base/collective_error.h>
-#include <mpm_otm/grid_system/background_grid.h>
+#include <mpm_otm/grid/background_grid.h>
 #include <mpm_otm/material_points/material_points.h>
 #include <mpm_otm/problems/problem.h>
 #include <mpm_otm/shape_functions/b_splines.h>

@@ -1,7 +1,7 @@
 #include <mpm_otm/algorithms/time_stepper.h>
 #include <mpm_otm/base/collective_error.h>
 #include <mpm_otm/material_points/material_points.h>
-#include <mpm_otm/materials/material.h>
+#include <mpm_otm/materials/material_library.h>
 #include <mpm_otm/shape_functions/shape_functions.h>
 
 #include <cmath>
@@ -10,23 +10,27 @@
 namespace MpmOtm
 {
   template <int dim>
-  TimeStepper<dim>::TimeStepper(MaterialPoints<dim>       &material_points,
-                                const ShapeFunctions<dim> &shape_functions,
-                                NodalSystem<dim>          &system,
-                                MassMatrix<dim>           &mass_matrix,
-                                const NodalUpdate<dim>    &nodal_update,
-                                GridMotion<dim>           &grid_motion,
-                                const Material<dim>       &material,
-                                const Problem<dim>        &problem,
-                                TimerOutput               &timer)
+  TimeStepper<dim>::TimeStepper(MaterialPoints<dim>        &material_points,
+                                const ShapeFunctions<dim>  &shape_functions,
+                                NodalSystem<dim>           &system,
+                                MassMatrix<dim>            &mass_matrix,
+                                const NodalUpdate<dim>     &nodal_update,
+                                GridMotion<dim>            &grid_motion,
+                                const MaterialLibrary<dim> &materials,
+                                const Problem<dim>         &problem,
+                                BoundaryConditions<dim>    &boundary_conditions,
+                                const LocalDamping<dim>    &damping,
+                                TimerOutput                &timer)
     : material_points(material_points)
     , shape_functions(shape_functions)
     , system(system)
     , mass_matrix(mass_matrix)
     , nodal_update(nodal_update)
     , grid_motion(grid_motion)
-    , material(material)
+    , materials(materials)
     , problem(problem)
+    , boundary_conditions(boundary_conditions)
+    , damping(damping)
     , timer(timer)
   {}
 
@@ -49,20 +53,22 @@ namespace MpmOtm
                       !grid_motion.tractions_on_grid_faces());
       grid_motion.add_face_tractions(problem, time, system);
       system.finish_assembly();
+      if (damping.is_active(time))
+        damping.apply(system);
       mass_matrix.assemble(system, data);
     }
     if (nodal_update.needs_nodal_accelerations())
       {
         TimerOutput::Scope scope(timer, "solve");
         for (unsigned int c = 0; c < dim; ++c)
-          {
-            mass_matrix.solve(system,
-                              data,
-                              system.force[c],
-                              system.acceleration[c],
-                              c);
-            system.acceleration[c].update_ghost_values();
-          }
+          mass_matrix.solve(system,
+                            data,
+                            system.force[c],
+                            system.acceleration[c],
+                            c);
+        boundary_conditions.constrain_accelerations(system, time, dt);
+        for (unsigned int c = 0; c < dim; ++c)
+          system.acceleration[c].update_ghost_values();
       }
     const bool velocity_from_displacement =
       nodal_update.particle_velocity() ==
@@ -81,6 +87,7 @@ namespace MpmOtm
                                             dt,
                                             previous_dt > 0. ? previous_dt :
                                                                dt);
+      boundary_conditions.constrain_velocities(system, time + dt);
       for (unsigned int c = 0; c < dim; ++c)
         system.velocity[c].update_ghost_values();
     }
@@ -154,9 +161,11 @@ namespace MpmOtm
         F = (unit_symmetric_tensor<dim>() + dt * velocity_gradient) * F;
         Layout::set_deformation_gradient(properties, F);
 
-        SymmetricTensor<2, dim> sigma = Layout::get_stress(properties);
-        material.update_stress(F, velocity_gradient, dt, sigma);
-        Layout::set_stress(properties, sigma);
+        const unsigned int id    = Layout::get_material_id(properties);
+        StressState<dim>   state = materials.stress_state(id, properties);
+        materials[id].update_stress(F, velocity_gradient, dt, state);
+        materials.store(state, properties);
+        const SymmetricTensor<2, dim> &sigma = state.stress;
 
         const Point<dim> location =
           particle.get_location() + dt * point_velocity;

@@ -97,7 +97,8 @@ namespace MpmOtm
     std::vector<Tensor<1, dim>> traction(2 * dim);
     for (const auto id : problem.traction_boundaries())
       traction[id] = problem.traction(id, time);
-    const bool has_body_force = problem.has_body_force();
+    const bool           has_body_force = problem.has_body_force();
+    const Tensor<1, dim> gravity        = problem.gravity(time);
 
     double *const mass = lumped_mass.get_values();
     double       *q[dim];
@@ -118,9 +119,9 @@ namespace MpmOtm
           Layout::get_vector(properties, Layout::velocity);
         const SymmetricTensor<2, dim> sigma = Layout::get_stress(properties);
 
-        Tensor<1, dim> external;
+        Tensor<1, dim> external = m * gravity;
         if (has_body_force)
-          external =
+          external +=
             m *
             problem.body_force(Point<dim>(
                                  Layout::get_vector(properties,

@@ -2,10 +2,11 @@
 #include <deal.II/base/utilities.h>
 #include <deal.II/numerics/data_out.h>
 
-#include <mpm_otm/grid_system/background_grid.h>
+#include <mpm_otm/grid/background_grid.h>
 #include <mpm_otm/grid_system/nodal_system.h>
 #include <mpm_otm/io/output_writer.h>
 #include <mpm_otm/material_points/material_points.h>
+#include <mpm_otm/materials/material_library.h>
 #include <mpm_otm/shape_functions/powell_sabin.h>
 #include <mpm_otm/shape_functions/shape_functions.h>
 
@@ -20,28 +21,42 @@ namespace MpmOtm
   {
     /**
      * The material points of this rank as zero-dimensional patches with
-     * displacement, velocity, stress, volume, mass and id.
+     * displacement and velocity (vectors), the stress (a tensor; in 2D and
+     * 1D also the stress out of the plane or line), the mean stress
+     * tr(sigma)/3 and the von Mises stress sqrt(3 J2) of the
+     * three-dimensional stress, det F, volume, mass, material, equivalent
+     * plastic strain, the materials' internal variables and the id.
      */
     template <int dim>
     class ParticlePatches : public DataOutInterface<0, dim>
     {
     public:
-      explicit ParticlePatches(const MaterialPoints<dim> &material_points)
+      ParticlePatches(const MaterialPoints<dim>  &material_points,
+                      const MaterialLibrary<dim> &materials)
       {
         using Layout = PropertyLayout<dim>;
-        names.clear();
         for (unsigned int d = 0; d < dim; ++d)
           names.push_back("displacement");
         for (unsigned int d = 0; d < dim; ++d)
           names.push_back("velocity");
-        for (unsigned int k = 0; k < Layout::n_stress_components; ++k)
-          {
-            const auto ij =
-              SymmetricTensor<2, dim>::unrolled_to_component_indices(k);
-            names.push_back(std::string("stress_") + "xyz"[ij[0]] +
-                            "xyz"[ij[1]]);
-          }
-        names.insert(names.end(), {"volume", "mass", "id"});
+        for (unsigned int i = 0; i < dim; ++i)
+          for (unsigned int j = 0; j < dim; ++j)
+            names.push_back(dim == 1 ? "stress_xx" : "stress");
+        if (dim == 2)
+          names.push_back("stress_zz");
+        if (dim == 1)
+          names.push_back("stress_lateral");
+        names.insert(names.end(),
+                     {"mean_stress",
+                      "von_mises_stress",
+                      "det_F",
+                      "volume",
+                      "mass",
+                      "material",
+                      "plastic_strain"});
+        const auto internal = materials.internal_variable_names();
+        names.insert(names.end(), internal.begin(), internal.end());
+        names.push_back("id");
 
         for (const auto &particle : material_points.particle_handler())
           {
@@ -56,10 +71,38 @@ namespace MpmOtm
               patch.data(n++, 0) = particle.get_location()[d] - X[d];
             for (unsigned int d = 0; d < dim; ++d)
               patch.data(n++, 0) = properties[Layout::velocity + d];
-            for (unsigned int k = 0; k < Layout::n_stress_components; ++k)
-              patch.data(n++, 0) = properties[Layout::stress + k];
-            patch.data(n++, 0) = Layout::volume(properties);
-            patch.data(n++, 0) = properties[Layout::mass];
+            const SymmetricTensor<2, dim> sigma =
+              Layout::get_stress(properties);
+            for (unsigned int i = 0; i < dim; ++i)
+              for (unsigned int j = 0; j < dim; ++j)
+                patch.data(n++, 0) = sigma[i][j];
+            const double out_of_plane =
+              Layout::get_out_of_plane_stress(properties);
+            if (dim < 3)
+              patch.data(n++, 0) = out_of_plane;
+            // The three-dimensional stress: plane strain or uniaxial strain.
+            SymmetricTensor<2, 3> full;
+            for (unsigned int i = 0; i < dim; ++i)
+              for (unsigned int j = i; j < dim; ++j)
+                full[i][j] = sigma[i][j];
+            for (unsigned int d = dim; d < 3; ++d)
+              full[d][d] = out_of_plane;
+            patch.data(n++, 0) = trace(full) / 3.;
+            patch.data(n++, 0) = std::sqrt(1.5) * deviator(full).norm();
+            patch.data(n++, 0) =
+              determinant(Layout::get_deformation_gradient(properties));
+            patch.data(n++, 0)       = Layout::volume(properties);
+            patch.data(n++, 0)       = properties[Layout::mass];
+            const unsigned int id    = Layout::get_material_id(properties);
+            patch.data(n++, 0)       = id;
+            const unsigned int first = materials.first_internal_variable(id);
+            patch.data(n++, 0)       = materials[id].equivalent_plastic_strain(
+              ArrayView<const double>(properties.data() + first,
+                                      materials.n_internal_variables(id)));
+            for (unsigned int k = Layout::n_fixed_properties;
+                 k < properties.size();
+                 ++k)
+              patch.data(n++, 0) = properties[k];
             patch.data(n++, 0) = particle.get_id();
             patches.push_back(patch);
           }
@@ -94,7 +137,11 @@ namespace MpmOtm
                 {dim,
                  2 * dim - 1,
                  "velocity",
-                 DataComponentInterpretation::component_is_part_of_vector}};
+                 DataComponentInterpretation::component_is_part_of_vector},
+                {2 * dim,
+                 2 * dim + dim * dim - 1,
+                 "stress",
+                 DataComponentInterpretation::component_is_part_of_tensor}};
       }
 
       std::vector<std::string>                names;
@@ -170,9 +217,14 @@ namespace MpmOtm
   OutputWriter<dim>::initialize(const ParameterHandler &prm,
                                 const bool              has_displacement_error,
                                 const bool              has_stress_error,
-                                const MPI_Comm          communicator)
+                                const MPI_Comm          communicator,
+                                const MaterialLibrary<dim> &material_library,
+                                const std::vector<std::string> &boundary_names,
+                                const bool                      has_gravity)
   {
-    mpi_communicator = communicator;
+    mpi_communicator           = communicator;
+    materials                  = &material_library;
+    write_gravitational_energy = has_gravity;
     // Rank 0 creates the directory; every rank learns whether that worked,
     // so that all stop together instead of waiting for rank 0.
     std::string problem;
@@ -198,6 +250,12 @@ namespace MpmOtm
           statistics << ",displacement_rms_error,displacement_l2_error";
         if (has_stress_error)
           statistics << ",stress_rms_error";
+        if (has_gravity)
+          statistics << ",gravitational_energy";
+        for (const auto &name : boundary_names)
+          for (const std::string quantity : {"force", "displacement"})
+            for (unsigned int d = 0; d < dim; ++d)
+              statistics << ',' << name << '_' << quantity << '_' << "xyz"[d];
         statistics << '\n';
       }
     MPI_Barrier(communicator);
@@ -253,7 +311,7 @@ namespace MpmOtm
     const double               time,
     const MaterialPoints<dim> &material_points)
   {
-    ParticlePatches<dim> patches(material_points);
+    ParticlePatches<dim> patches(material_points, *materials);
     const std::string    record =
       patches.write_vtu_with_pvtu_record(output_directory + "/",
                                          "particles",
@@ -364,7 +422,16 @@ namespace MpmOtm
         for (const auto &[i, j] : stress_columns)
           row << ',' << sigma[i][j];
         row << ',' << Layout::volume(properties) << ','
-            << properties[Layout::mass] << '\n';
+            << properties[Layout::mass];
+        if (dim < 3)
+          row << ',' << Layout::get_out_of_plane_stress(properties);
+        const unsigned int id    = Layout::get_material_id(properties);
+        const unsigned int first = materials->first_internal_variable(id);
+        row << ',' << id << ','
+            << (*materials)[id].equivalent_plastic_strain(
+                 ArrayView<const double>(properties.data() + first,
+                                         materials->n_internal_variables(id)))
+            << '\n';
         rows.emplace_back(particle.get_id(), row.str());
       }
 
@@ -377,9 +444,11 @@ namespace MpmOtm
     std::sort(sorted.begin(), sorted.end());
 
     static const char *const header[3] = {
-      "id,X,x,ux,vx,sxx,volume,mass",
-      "id,X,Y,x,y,ux,uy,vx,vy,sxx,syy,sxy,volume,mass",
-      "id,X,Y,Z,x,y,z,ux,uy,uz,vx,vy,vz,sxx,syy,szz,sxy,syz,sxz,volume,mass"};
+      "id,X,x,ux,vx,sxx,volume,mass,s_lateral,material,plastic_strain",
+      "id,X,Y,x,y,ux,uy,vx,vy,sxx,syy,sxy,volume,mass,szz,material,"
+      "plastic_strain",
+      "id,X,Y,Z,x,y,z,ux,uy,uz,vx,vy,vz,sxx,syy,szz,sxy,syz,sxz,volume,mass,"
+      "material,plastic_strain"};
     std::ofstream csv(output_directory + "/particles-" + step_string(step) +
                       ".csv");
     csv << header[dim - 1] << '\n';
@@ -400,12 +469,22 @@ namespace MpmOtm
     std::ofstream file(output_directory + "/statistics.csv", std::ios::app);
     file << std::setprecision(12) << step << ',' << time << ','
          << statistics.kinetic_energy << ',' << statistics.strain_energy << ','
-         << statistics.kinetic_energy + statistics.strain_energy;
+         << statistics.kinetic_energy + statistics.strain_energy +
+              statistics.gravitational_energy;
     if (statistics.has_displacement_error)
       file << ',' << statistics.displacement_rms_error << ','
            << statistics.displacement_l2_error;
     if (statistics.has_stress_error)
       file << ',' << statistics.stress_rms_error;
+    if (write_gravitational_energy)
+      file << ',' << statistics.gravitational_energy;
+    for (const auto &[force, displacement] : statistics.boundary_reactions)
+      {
+        for (unsigned int d = 0; d < dim; ++d)
+          file << ',' << force[d];
+        for (unsigned int d = 0; d < dim; ++d)
+          file << ',' << displacement[d];
+      }
     file << '\n';
   }
 

@@ -2,7 +2,7 @@
 
 #include <mpm_otm/io/statistics.h>
 #include <mpm_otm/material_points/material_points.h>
-#include <mpm_otm/materials/material.h>
+#include <mpm_otm/materials/material_library.h>
 #include <mpm_otm/problems/problem.h>
 
 #include <cmath>
@@ -11,17 +11,18 @@ namespace MpmOtm
 {
   template <int dim>
   void
-  Statistics<dim>::compute(const MaterialPoints<dim> &material_points,
-                           const Material<dim>       &material,
-                           const Problem<dim>        &problem,
-                           const double               time)
+  Statistics<dim>::compute(const MaterialPoints<dim>  &material_points,
+                           const MaterialLibrary<dim> &materials,
+                           const Problem<dim>         &problem,
+                           const double                time)
   {
     using Layout           = PropertyLayout<dim>;
     has_displacement_error = problem.has_exact_solution();
     has_stress_error       = problem.has_exact_stress();
 
-    // kinetic, strain, mass, momentum (3), squared errors (3)
-    double sums[9] = {};
+    // kinetic, strain, mass, momentum (3), squared errors (3), gravitational
+    double               sums[10] = {};
+    const Tensor<1, dim> gravity  = problem.gravity(time);
     for (const auto &particle : material_points.particle_handler())
       {
         const auto           properties = particle.get_properties();
@@ -34,12 +35,13 @@ namespace MpmOtm
         const SymmetricTensor<2, dim> sigma = Layout::get_stress(properties);
 
         sums[0] += 0.5 * m * v.norm_square();
-        sums[1] +=
-          material.strain_energy(Layout::get_deformation_gradient(properties),
-                                 sigma,
-                                 properties[Layout::initial_volume],
-                                 volume);
+        sums[1] += materials[Layout::get_material_id(properties)].strain_energy(
+          Layout::get_deformation_gradient(properties),
+          sigma,
+          properties[Layout::initial_volume],
+          volume);
         sums[2] += m;
+        sums[9] -= m * (gravity * (particle.get_location() - X));
         for (unsigned int d = 0; d < dim; ++d)
           sums[3 + d] += m * v[d];
         if (has_displacement_error)
@@ -58,9 +60,9 @@ namespace MpmOtm
       }
 
     const MPI_Comm communicator = material_points.communicator();
-    Utilities::MPI::sum(ArrayView<const double>(sums, 9),
+    Utilities::MPI::sum(ArrayView<const double>(sums, 10),
                         communicator,
-                        ArrayView<double>(sums, 9));
+                        ArrayView<double>(sums, 10));
     const double n_points =
       static_cast<double>(material_points.n_global_points());
 
@@ -72,6 +74,7 @@ namespace MpmOtm
     displacement_rms_error = std::sqrt(sums[6] / n_points);
     displacement_l2_error  = std::sqrt(sums[7]);
     stress_rms_error       = std::sqrt(sums[8] / n_points);
+    gravitational_energy   = sums[9];
   }
 
 

@@ -1,15 +1,21 @@
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/quadrature.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_simplex_p.h>
+#include <deal.II/fe/fe_values.h>
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/grid_tools_cache.h>
 
 #include <mpm_otm/base/collective_error.h>
-#include <mpm_otm/grid_system/background_grid.h>
+#include <mpm_otm/grid/background_grid.h>
 #include <mpm_otm/material_points/material_points.h>
-#include <mpm_otm/materials/material.h>
+#include <mpm_otm/materials/material_library.h>
 #include <mpm_otm/problems/problem.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <functional>
 #include <sstream>
 
 namespace MpmOtm
@@ -99,6 +105,77 @@ namespace MpmOtm
           return {cell, xi};
       return {Iterator(), xi};
     }
+
+    /**
+     * The centres of the n^dim squares/cubes of side 1/n that subdivide the
+     * reference square/cube, in lexicographic order.
+     */
+    template <int dim>
+    std::vector<Point<dim>>
+    hypercube_pattern(const unsigned int n)
+    {
+      std::vector<Point<dim>> points(Utilities::fixed_power<dim>(n));
+      for (unsigned int local = 0; local < points.size(); ++local)
+        for (unsigned int d = 0, rest = local; d < dim; ++d, rest /= n)
+          points[local][d] = (rest % n + 0.5) / n;
+      return points;
+    }
+
+    /**
+     * The centroids of the n^dim simplices of equal measure that subdivide
+     * the reference simplex {xi >= 0, sum xi <= 1} regularly: in 2D the
+     * triangles between the lines xi_0 = k/n, xi_1 = k/n and xi_0 + xi_1 =
+     * k/n; in 3D Freudenthal's subdivision. Constructed as Kuhn's
+     * triangulation of the unit cubes of y-space, where the scaled simplex is
+     * n >= y_0 >= y_1 >= ... >= 0 and xi_k = (y_k - y_(k+1)) / n (a map of
+     * determinant 1 / n^dim that takes simplices to simplices and centroids
+     * to centroids).
+     */
+    template <int dim>
+    std::vector<Point<dim>>
+    simplex_pattern(const unsigned int n)
+    {
+      std::vector<Point<dim>>       points;
+      std::array<unsigned int, dim> corner;
+      std::array<unsigned int, dim> order;
+      // Every corner n > c_0 >= c_1 >= ... >= c_(dim-1) >= 0.
+      const std::function<void(unsigned int)> next_corner =
+        [&](const unsigned int k) {
+          if (k < dim)
+            {
+              const unsigned int top = (k == 0 ? n - 1 : corner[k - 1]);
+              for (corner[k] = 0; corner[k] <= top; ++corner[k])
+                next_corner(k + 1);
+              return;
+            }
+          // Kuhn simplex u_order[0] >= u_order[1] >= ...: inside the
+          // region if k comes before k + 1 wherever c_k = c_(k+1).
+          for (unsigned int d = 0; d < dim; ++d)
+            order[d] = d;
+          do
+            {
+              std::array<unsigned int, dim> position;
+              for (unsigned int j = 0; j < dim; ++j)
+                position[order[j]] = j;
+              bool inside = true;
+              for (unsigned int d = 0; d + 1 < dim; ++d)
+                if (corner[d] == corner[d + 1] && position[d] > position[d + 1])
+                  inside = false;
+              if (!inside)
+                continue;
+              std::array<double, dim> y;
+              for (unsigned int d = 0; d < dim; ++d)
+                y[d] = corner[d] + double(dim - position[d]) / (dim + 1);
+              Point<dim> xi;
+              for (unsigned int d = 0; d < dim; ++d)
+                xi[d] = (d + 1 < dim ? y[d] - y[d + 1] : y[d]) / n;
+              points.push_back(xi);
+          } while (std::next_permutation(order.begin(), order.end()));
+        };
+      next_corner(0);
+      AssertDimension(points.size(), Utilities::fixed_power<dim>(n));
+      return points;
+    }
   } // namespace
 
 
@@ -152,15 +229,15 @@ namespace MpmOtm
 
   template <int dim>
   void
-  MaterialPoints<dim>::seed(const BackgroundGrid<dim> &background,
-                            const Material<dim>       &material,
-                            const Problem<dim>        &problem)
+  MaterialPoints<dim>::seed(const BackgroundGrid<dim>  &background,
+                            const MaterialLibrary<dim> &materials,
+                            const Problem<dim>         &problem)
   {
     grid      = &background;
     particles = std::make_unique<Particles::ParticleHandler<dim>>(
       grid->triangulation(),
       grid->mapping(),
-      PropertyLayout<dim>::n_properties);
+      materials.n_properties());
     particles->signals.particle_lost.connect(
       [this](const typename Particles::ParticleIterator<dim> &particle,
              const typename Triangulation<dim>::active_cell_iterator &) {
@@ -171,17 +248,21 @@ namespace MpmOtm
         std::make_unique<GridTools::Cache<dim, dim>>(grid->triangulation(),
                                                      grid->mapping());
 
-    const BoundingBox<dim> region = problem.material_region();
-    const Point<dim>       lower  = grid->box().get_boundary_points().first;
-    const auto            &blocks = grid->subdivisions();
+    points_per_body.assign(problem.n_bodies(), 0);
+    points_outside_bodies = 0;
+    if (!grid->is_box())
+      {
+        insert_points_of_cells(materials, problem);
+        particles->update_cached_numbers();
+        Utilities::MPI::sum(points_per_body, communicator(), points_per_body);
+        points_outside_bodies =
+          Utilities::MPI::sum(points_outside_bodies, communicator());
+        check_every_body_has_points(problem);
+        return;
+      }
 
-    const auto block_is_material = [&](const std::vector<unsigned int> &b) {
-      Point<dim> centre;
-      for (unsigned int d = 0; d < dim; ++d)
-        centre[d] =
-          lower[d] + (b[d] + 0.5) * grid->box().side_length(d) / blocks[d];
-      return region.point_inside(centre);
-    };
+    const Point<dim> lower  = grid->box().get_boundary_points().first;
+    const auto      &blocks = grid->subdivisions();
 
     std::vector<unsigned int> block(dim);
     if (!grid->is_simplex())
@@ -205,8 +286,7 @@ namespace MpmOtm
                   linear = linear * blocks[d] + block[d];
                 }
               owned_cell_of_block[linear] = cell;
-              if (block_is_material(block))
-                insert_points_of_block(block, cell, material, problem);
+              insert_points_of_block(block, cell, materials, problem);
             }
       }
     else
@@ -224,25 +304,30 @@ namespace MpmOtm
                 block[d] = rest % blocks[d];
                 rest /= blocks[d];
               }
-            if (block_is_material(block))
-              insert_points_of_block(
-                block,
-                typename Triangulation<dim>::active_cell_iterator(),
-                material,
-                problem);
+            insert_points_of_block(
+              block,
+              typename Triangulation<dim>::active_cell_iterator(),
+              materials,
+              problem);
           }
       }
     particles->update_cached_numbers();
+
+    Utilities::MPI::sum(points_per_body, communicator(), points_per_body);
+    points_outside_bodies =
+      Utilities::MPI::sum(points_outside_bodies, communicator());
+    check_every_body_has_points(problem);
 
     // Every traction boundary must lie on a block boundary and have received
     // boundary points.
     for (const auto id : problem.traction_boundaries())
       {
-        const unsigned int d    = id / 2;
-        const double       face = (id % 2 == 0) ?
-                                    region.get_boundary_points().first[d] :
-                                    region.get_boundary_points().second[d];
-        const double       blocks_to_face =
+        const BoundingBox<dim> region = problem.material_region();
+        const unsigned int     d      = id / 2;
+        const double           face   = (id % 2 == 0) ?
+                                          region.get_boundary_points().first[d] :
+                                          region.get_boundary_points().second[d];
+        const double           blocks_to_face =
           (face - lower[d]) / (grid->box().side_length(d) / blocks[d]);
         AssertThrow(
           std::abs(blocks_to_face - std::round(blocks_to_face)) < 1e-8,
@@ -272,17 +357,149 @@ namespace MpmOtm
 
   template <int dim>
   void
+  MaterialPoints<dim>::check_every_body_has_points(
+    const Problem<dim> &problem) const
+  {
+    for (unsigned int body = 0; body < points_per_body.size(); ++body)
+      AssertThrow(points_per_body[body] > 0,
+                  ExcMessage(problem.body_name(body) +
+                             " received no material point: no point of the "
+                             "seeding pattern (Particles/Particles per cell "
+                             "per direction in each " +
+                             (grid->is_box() ? "block of the grid" :
+                                               "cell of the Mesh file") +
+                             ") lies in it. Check that it lies inside the "
+                             "grid (Mesh) and is larger than the point "
+                             "spacing, or seed more points."));
+  }
+
+
+
+  template <int dim>
+  void
+  MaterialPoints<dim>::set_point_properties(
+    const Point<dim>           &X,
+    const unsigned int          body,
+    const double                volume,
+    const MaterialLibrary<dim> &materials,
+    const Problem<dim>         &problem,
+    std::vector<double>        &properties) const
+  {
+    using Layout = PropertyLayout<dim>;
+    std::fill(properties.begin(), properties.end(), 0.);
+    const unsigned int material_id  = problem.material_id(body);
+    properties[Layout::material_id] = material_id;
+    properties[Layout::mass]        = materials[material_id].density() * volume;
+    const auto [sigma, out_of_plane] = problem.initial_stress(X, body);
+    Layout::set_stress(ArrayView<double>(properties), sigma);
+    if (dim < 3)
+      properties[Layout::out_of_plane_stress] = out_of_plane;
+    properties[Layout::initial_volume] = volume;
+    const Tensor<1, dim> v0            = problem.initial_velocity(X);
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        properties[Layout::initial_position + d]               = X[d];
+        properties[Layout::velocity + d]                       = v0[d];
+        properties[Layout::deformation_gradient + d * dim + d] = 1.;
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  MaterialPoints<dim>::insert_points_of_cells(
+    const MaterialLibrary<dim> &materials,
+    const Problem<dim>         &problem)
+  {
+    const std::string file = "Mesh/Mesh file (<" + grid->mesh_file() + ">)";
+    AssertThrow(problem.traction_boundaries().empty(),
+                ExcMessage("Custom problem/Traction boundary ids: tractions "
+                           "act on the sides of a box material region on a "
+                           "box grid, not on a " +
+                           file +
+                           "; prescribe a velocity (a Boundary of Type = "
+                           "velocity) or a body force instead."));
+    for (unsigned int d = 1; d < dim; ++d)
+      AssertThrow(n_per_direction[d] == n_per_direction[0],
+                  ExcMessage("Particles/Particles per cell: with a " + file +
+                             " give one value (n points per direction of "
+                             "each cell's reference cell, whose directions "
+                             "are not the coordinate directions), not one "
+                             "per direction."));
+    const unsigned int      n       = n_per_direction[0];
+    const bool              simplex = grid->is_simplex();
+    std::vector<Point<dim>> reference =
+      simplex ? simplex_pattern<dim>(n) : hypercube_pattern<dim>(n);
+    const unsigned int                  n_pattern = reference.size();
+    std::unique_ptr<FiniteElement<dim>> fe;
+    if (simplex)
+      fe = std::make_unique<FE_SimplexP<dim>>(1);
+    else
+      fe = std::make_unique<FE_Q<dim>>(1);
+    FEValues<dim> pattern(grid->mapping(),
+                          *fe,
+                          Quadrature<dim>(reference,
+                                          std::vector<double>(n_pattern,
+                                                              1. / n_pattern)),
+                          update_quadrature_points | update_JxW_values);
+
+    std::vector<double> properties(materials.n_properties(), 0.);
+    for (const auto &cell : grid->triangulation().active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          pattern.reinit(cell);
+          // V_p = |J(xi_p)| |cell| / sum_q |J(xi_q)|: the measure of the
+          // point's part of the cell (exact for bilinear quadrilaterals,
+          // whose |J| is affine), and |cell| / n^dim on affine cells.
+          double sum = 0;
+          for (unsigned int q = 0; q < n_pattern; ++q)
+            sum += pattern.JxW(q);
+          const double measure = cell->measure();
+          for (unsigned int q = 0; q < n_pattern; ++q)
+            {
+              const Point<dim>   X    = pattern.quadrature_point(q);
+              const unsigned int body = problem.body_containing(X);
+              if (body == numbers::invalid_unsigned_int)
+                {
+                  ++points_outside_bodies;
+                  continue;
+                }
+              ++points_per_body[body];
+              set_point_properties(X,
+                                   body,
+                                   measure * pattern.JxW(q) / sum,
+                                   materials,
+                                   problem,
+                                   properties);
+              particles->insert_particle(X,
+                                         reference[q],
+                                         static_cast<types::particle_index>(
+                                           cell->global_active_cell_index()) *
+                                             n_pattern +
+                                           q,
+                                         cell,
+                                         ArrayView<const double>(properties));
+            }
+        }
+  }
+
+
+
+  template <int dim>
+  void
   MaterialPoints<dim>::insert_points_of_block(
     const std::vector<unsigned int>                         &block,
     const typename Triangulation<dim>::active_cell_iterator &block_cell,
-    const Material<dim>                                     &material,
+    const MaterialLibrary<dim>                              &materials,
     const Problem<dim>                                      &problem)
   {
     using Layout             = PropertyLayout<dim>;
     const auto &blocks       = grid->subdivisions();
     const auto  grid_lower   = grid->box().get_boundary_points().first;
-    const auto  region       = problem.material_region();
     const auto  traction_ids = problem.traction_boundaries();
+    const auto  region =
+      traction_ids.empty() ? BoundingBox<dim>() : problem.material_region();
 
     unsigned int   points_per_block = 1;
     double         block_volume     = 1;
@@ -299,7 +516,7 @@ namespace MpmOtm
       }
     const double volume = block_volume / points_per_block;
 
-    std::vector<double> properties(Layout::n_properties, 0.);
+    std::vector<double> properties(materials.n_properties(), 0.);
     typename Triangulation<dim>::active_cell_iterator hint;
     for (unsigned int local = 0; local < points_per_block; ++local)
       {
@@ -314,6 +531,13 @@ namespace MpmOtm
         Point<dim> X;
         for (unsigned int d = 0; d < dim; ++d)
           X[d] = block_lower[d] + reference[d] * block_size[d];
+        const unsigned int body = problem.body_containing(X);
+        if (body == numbers::invalid_unsigned_int)
+          {
+            ++points_outside_bodies;
+            continue;
+          }
+        ++points_per_body[body];
 
         // On hypercube grids the block is the cell and the reference
         // coordinates are those within the block.
@@ -328,16 +552,7 @@ namespace MpmOtm
             hint      = cell;
           }
 
-        std::fill(properties.begin(), properties.end(), 0.);
-        properties[Layout::mass]           = material.density() * volume;
-        properties[Layout::initial_volume] = volume;
-        const Tensor<1, dim> v0            = problem.initial_velocity(X);
-        for (unsigned int d = 0; d < dim; ++d)
-          {
-            properties[Layout::initial_position + d]               = X[d];
-            properties[Layout::velocity + d]                       = v0[d];
-            properties[Layout::deformation_gradient + d * dim + d] = 1.;
-          }
+        set_point_properties(X, body, volume, materials, problem, properties);
         // Boundary particles (thesis Sect. 2.4.1): the outermost layer next
         // to a traction boundary represents the boundary measure V_p / spacing.
         for (const auto id : traction_ids)
@@ -372,9 +587,11 @@ namespace MpmOtm
   MaterialPoints<dim>::locate()
   {
     lost_points.clear();
+    // Cells of a Mesh file are not axis-parallel boxes: deal.II's sort,
+    // which is correct on quadrilaterals and hexahedra.
     if (grid->is_simplex())
       locate_on_simplices();
-    else if (!locate_in_boxes())
+    else if (!grid->is_box() || !locate_in_boxes())
       particles->sort_particles_into_subdomains_and_cells();
 
     std::ostringstream message;
@@ -384,8 +601,12 @@ namespace MpmOtm
     stop_if_any_rank_failed(communicator(),
                             message.str(),
                             "",
-                            "Enlarge the grid (Mesh/Lower corner, Mesh/Upper "
-                            "corner) or reduce the time step.");
+                            grid->is_box() ?
+                              "Enlarge the grid (Mesh/Lower corner, "
+                              "Mesh/Upper corner) or reduce the time step." :
+                              "Enlarge the mesh of Mesh/Mesh file (<" +
+                                grid->mesh_file() +
+                                ">) or reduce the time step.");
   }
 
 
@@ -553,7 +774,7 @@ namespace MpmOtm
         to_remove.push_back(point.particle);
       }
     particles->remove_particles(to_remove);
-    const unsigned int n_properties = PropertyLayout<dim>::n_properties;
+    const unsigned int n_properties = particles->n_properties_per_particle();
     for (unsigned int k = 0; k < moved.size(); ++k)
       {
         const auto      &cell   = moved[k].cell;
@@ -609,6 +830,15 @@ namespace MpmOtm
   MaterialPoints<dim>::n_global_points() const
   {
     return particles->n_global_particles();
+  }
+
+
+
+  template <int dim>
+  types::particle_index
+  MaterialPoints<dim>::n_pattern_points_outside_bodies() const
+  {
+    return points_outside_bodies;
   }
 
 

@@ -13,9 +13,9 @@ namespace MpmOtm
   template <int dim>
   void
   HypoElastic<dim>::update_stress(const Tensor<2, dim> &,
-                                  const Tensor<2, dim>    &velocity_gradient,
-                                  const double             dt,
-                                  SymmetricTensor<2, dim> &stress) const
+                                  const Tensor<2, dim> &velocity_gradient,
+                                  const double          dt,
+                                  StressState<dim>     &state) const
   {
     // Thesis Eqs. 2.40-2.43: strain and spin increments from the velocity
     // gradient, D from K and G (Eqs. 2.6-2.7, so that K - 2G/3 = lambda).
@@ -23,15 +23,20 @@ namespace MpmOtm
       dt * symmetrize(velocity_gradient);
     const Tensor<2, dim> spin_increment =
       0.5 * dt * (velocity_gradient - transpose(velocity_gradient));
-    const double         volumetric_increment = trace(strain_increment);
-    const Tensor<2, dim> old_stress(stress);
-    const Tensor<2, dim> rotation =
+    const double             volumetric_increment = trace(strain_increment);
+    SymmetricTensor<2, dim> &stress               = state.stress;
+    const Tensor<2, dim>     old_stress(stress);
+    const Tensor<2, dim>     rotation =
       spin_increment * old_stress - old_stress * spin_increment;
     stress +=
       this->lambda_lame * volumetric_increment * unit_symmetric_tensor<dim>() +
       2. * this->mu_lame * strain_increment -
       volumetric_increment * SymmetricTensor<2, dim>(stress) +
       symmetrize(rotation);
+    // The out-of-plane component (no strain or spin out of the plane).
+    if (dim < 3)
+      state.out_of_plane_stress +=
+        (this->lambda_lame - state.out_of_plane_stress) * volumetric_increment;
   }
 
 

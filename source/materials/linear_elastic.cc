@@ -15,7 +15,7 @@ namespace MpmOtm
   LinearElastic<dim>::update_stress(const Tensor<2, dim> &F,
                                     const Tensor<2, dim> &,
                                     const double,
-                                    SymmetricTensor<2, dim> &stress) const
+                                    StressState<dim> &state) const
   {
     const SymmetricTensor<2, dim> strain =
       symmetrize(F) - unit_symmetric_tensor<dim>();
@@ -25,7 +25,11 @@ namespace MpmOtm
     const Tensor<2, dim> sigma =
       (this->lambda_lame / J) * trace(strain) * F +
       (2. * this->mu_lame / J) * F * Tensor<2, dim>(strain);
-    stress = symmetrize(sigma);
+    state.stress = symmetrize(sigma);
+    // Plane strain (2D) and uniaxial strain (1D): F and eps have no
+    // out-of-plane part, so sigma_zz = lambda / J tr(eps).
+    state.out_of_plane_stress =
+      (dim < 3) ? (this->lambda_lame / J) * trace(strain) : 0.;
   }
 
 

@@ -11,7 +11,6 @@ namespace MpmOtm
     const std::string &model_names,
     const std::string &model_documentation)
   {
-    prm.enter_subsection("Material");
     {
       prm.declare_entry("Model",
                         "linear elastic",
@@ -32,7 +31,6 @@ namespace MpmOtm
                                          Patterns::Double::max_double_value),
                         "Initial mass density rho (kg/m^dim), positive.");
     }
-    prm.leave_subsection();
   }
 
 
@@ -41,18 +39,79 @@ namespace MpmOtm
   void
   Material<dim>::parse_parameters(ParameterHandler &prm)
   {
-    prm.enter_subsection("Material");
     young   = prm.get_double("Young's modulus");
     poisson = prm.get_double("Poisson's ratio");
     rho     = prm.get_double("Density");
-    prm.leave_subsection();
     AssertThrow(young > 0,
-                ExcMessage("Material/Young's modulus must be positive."));
-    AssertThrow(rho > 0, ExcMessage("Material/Density must be positive."));
+                ExcMessage(entry_name("Young's modulus") +
+                           " must be positive."));
+    AssertThrow(rho > 0,
+                ExcMessage(entry_name("Density") + " must be positive."));
     AssertThrow(poisson > -1. && poisson < 0.5,
-                ExcMessage("Material/Poisson's ratio must lie in (-1, 0.5)."));
+                ExcMessage(entry_name("Poisson's ratio") +
+                           " must lie in (-1, 0.5)."));
     lambda_lame = young * poisson / ((1. + poisson) * (1. - 2. * poisson));
     mu_lame     = young / (2. * (1. + poisson));
+  }
+
+
+
+  template <int dim>
+  void
+  Material<dim>::set_subsection_path(const std::string &path)
+  {
+    subsection_path = path;
+  }
+
+
+
+  template <int dim>
+  std::string
+  Material<dim>::entry_name(const std::string &entry) const
+  {
+    return subsection_path + "/" + entry;
+  }
+
+
+
+  template <int dim>
+  std::vector<std::string>
+  Material<dim>::internal_variables() const
+  {
+    return {};
+  }
+
+
+
+  template <int dim>
+  double
+  Material<dim>::equivalent_plastic_strain(
+    const ArrayView<const double> &) const
+  {
+    return 0.;
+  }
+
+
+
+  template <int dim>
+  double
+  Material<dim>::friction_angle() const
+  {
+    return 0.;
+  }
+
+
+
+  template <int dim>
+  double
+  Material<dim>::elastic_out_of_plane_stress(
+    const SymmetricTensor<2, dim> &stress) const
+  {
+    if (dim == 2)
+      return poisson * trace(stress);
+    if (dim == 1)
+      return poisson / (1. - poisson) * stress[0][0];
+    return 0.;
   }
 
 
@@ -71,6 +130,15 @@ namespace MpmOtm
   Material<dim>::youngs_modulus() const
   {
     return young;
+  }
+
+
+
+  template <int dim>
+  double
+  Material<dim>::poissons_ratio() const
+  {
+    return poisson;
   }
 
 

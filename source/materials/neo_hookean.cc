@@ -17,14 +17,17 @@ namespace MpmOtm
   NeoHookean<dim>::update_stress(const Tensor<2, dim> &F,
                                  const Tensor<2, dim> &,
                                  const double,
-                                 SymmetricTensor<2, dim> &stress) const
+                                 StressState<dim> &state) const
   {
     const double                  J = determinant(F);
     const SymmetricTensor<2, dim> left_cauchy_green =
       symmetrize(F * transpose(F));
-    stress =
+    state.stress =
       (this->lambda_lame * std::log(J) / J) * unit_symmetric_tensor<dim>() +
       (this->mu_lame / J) * (left_cauchy_green - unit_symmetric_tensor<dim>());
+    // No stretch out of the plane: b_zz = 1.
+    state.out_of_plane_stress =
+      (dim < 3) ? this->lambda_lame * std::log(J) / J : 0.;
   }
 
 

@@ -1,51 +1,12 @@
 #include <mpm_otm/base/plugins.h>
+#include <mpm_otm/base/subsection_names.h>
+#include <mpm_otm/materials/material_library.h>
 #include <mpm_otm/problems/custom_problem.h>
+
+#include <cmath>
 
 namespace MpmOtm
 {
-  namespace
-  {
-    const std::string variables[3] = {"x,t", "x,y,t", "x,y,z,t"};
-
-    template <int dim>
-    std::unique_ptr<FunctionParser<dim>>
-    make_function(const std::string &expressions, const std::string &entry)
-    {
-      auto function = std::make_unique<FunctionParser<dim>>(dim);
-      try
-        {
-          function->initialize(variables[dim - 1],
-                               expressions,
-                               {{"pi", numbers::PI}},
-                               true);
-        }
-      catch (const std::exception &error)
-        {
-          AssertThrow(false,
-                      ExcMessage("Custom problem/" + entry + ": <" +
-                                 expressions + "> is not a list of " +
-                                 std::to_string(dim) + " expressions in " +
-                                 variables[dim - 1] +
-                                 " separated by ';': " + error.what()));
-        }
-      return function;
-    }
-
-    template <int dim>
-    Tensor<1, dim>
-    evaluate(const FunctionParser<dim> &function,
-             const Point<dim>          &point,
-             const double               time)
-    {
-      // FunctionParser keeps its time as state; it is set on a copy-free
-      // path because evaluation is const in the problem interface.
-      const_cast<FunctionParser<dim> &>(function).set_time(time);
-      Tensor<1, dim> result;
-      for (unsigned int d = 0; d < dim; ++d)
-        result[d] = function.value(point, d);
-      return result;
-    }
-  } // namespace
 
 
 
@@ -59,7 +20,8 @@ namespace MpmOtm
                       zeros,
                       Patterns::Anything(),
                       "dim expressions in the initial position (x, y, z), "
-                      "separated by ';'.");
+                      "separated by ';' (without Bodies; a body has its "
+                      "own).");
     prm.declare_entry("Body force",
                       zeros,
                       Patterns::Anything(),
@@ -69,9 +31,10 @@ namespace MpmOtm
     prm.declare_entry("Material lower corner",
                       "",
                       Patterns::List(Patterns::Double(), 0, dim),
-                      "Lower corner of the box filled with material at t = 0 "
-                      "(empty: the whole grid). Blocks whose centre lies in "
-                      "the box are filled.");
+                      "Lower corner of the box filled with the default "
+                      "material at t = 0 when no Bodies are given (empty: "
+                      "the whole grid, for a Mesh file the cells of the "
+                      "file).");
     prm.declare_entry("Material upper corner",
                       "",
                       Patterns::List(Patterns::Double(), 0, dim),
@@ -81,13 +44,14 @@ namespace MpmOtm
                       "",
                       Patterns::Anything(),
                       "Velocity components fixed to zero per boundary id, "
-                      "e.g. '0: x, y; 2: y' (ids: 0 x_min, 1 x_max, 2 y_min, "
-                      "3 y_max, 4 z_min, 5 z_max).");
+                      "e.g. '0: x, y; 2: y' (box grids: 0 x_min, 1 x_max, 2 "
+                      "y_min, 3 y_max, 4 z_min, 5 z_max; Mesh file: its "
+                      "physical tags).");
     prm.declare_entry("Traction boundary ids",
                       "",
                       Patterns::List(Patterns::Integer(0, 5)),
                       "Boundary ids whose outermost material points carry "
-                      "the traction below.");
+                      "the traction below (box grids only).");
     prm.declare_entry("Traction",
                       zeros,
                       Patterns::Anything(),
@@ -108,27 +72,73 @@ namespace MpmOtm
   CustomProblem<dim>::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Custom problem");
+    const std::string path = "Custom problem/";
     velocity =
-      make_function<dim>(prm.get("Initial velocity"), "Initial velocity");
-    force = make_function<dim>(prm.get("Body force"), "Body force");
+      std::make_unique<ParsedExpression<dim>>(prm.get("Initial velocity"),
+                                              dim,
+                                              false,
+                                              path + "Initial velocity");
+    force = std::make_unique<ParsedExpression<dim>>(prm.get("Body force"),
+                                                    dim,
+                                                    true,
+                                                    path + "Body force");
     fixed = this->parse_fixed_components(prm.get("Fixed components"),
-                                         "Custom problem/Fixed components");
+                                         path + "Fixed components");
+    traction_ids.clear();
     for (const int id : Utilities::string_to_int(
            Utilities::split_string_list(prm.get("Traction boundary ids"))))
       {
         AssertThrow(id < static_cast<int>(2 * dim),
-                    ExcMessage("Custom problem/Traction boundary ids: id " +
+                    ExcMessage(path + "Traction boundary ids: id " +
                                std::to_string(id) + " must be below " +
                                std::to_string(2 * dim) + "."));
         traction_ids.push_back(id);
       }
-    traction_function = make_function<dim>(prm.get("Traction"), "Traction");
-    region_lower      = prm.get("Material lower corner");
-    region_upper      = prm.get("Material upper corner");
+    traction_function =
+      std::make_unique<ParsedExpression<dim>>(prm.get("Traction"),
+                                              dim,
+                                              true,
+                                              path + "Traction");
+    region_lower = prm.get("Material lower corner");
+    region_upper = prm.get("Material upper corner");
+    displacement.reset();
     if (!prm.get("Exact displacement").empty())
       displacement =
-        make_function<dim>(prm.get("Exact displacement"), "Exact displacement");
+        std::make_unique<ParsedExpression<dim>>(prm.get("Exact displacement"),
+                                                dim,
+                                                true,
+                                                path + "Exact displacement");
     prm.leave_subsection();
+
+    bodies.clear();
+    for (const auto &name : SubsectionNames::names_in(prm, "Bodies"))
+      {
+        prm.enter_subsection("Body " + name);
+        bodies.emplace_back();
+        bodies.back().parse_parameters(prm, name, *this->materials);
+        prm.leave_subsection();
+      }
+    AssertThrow(bodies.empty() || traction_ids.empty(),
+                ExcMessage("Custom problem/Traction boundary ids: tractions "
+                           "act on the sides of the box material region, "
+                           "which Bodies replace; remove the Bodies or the "
+                           "tractions (a prescribed velocity or a body force "
+                           "may do instead)."));
+    for (const auto &body : bodies)
+      if (body.has_geostatic_stress())
+        AssertThrow(this->has_gravity(),
+                    ExcMessage("Body " + body.name() +
+                               "/Initial stress = geostatic needs gravity: "
+                               "set Gravity/Vector."));
+  }
+
+
+
+  template <int dim>
+  bool
+  CustomProblem<dim>::runs_on_any_grid() const
+  {
+    return true;
   }
 
 
@@ -147,6 +157,13 @@ namespace MpmOtm
   BoundingBox<dim>
   CustomProblem<dim>::material_region() const
   {
+    AssertThrow(bodies.empty(),
+                ExcMessage("This set-up needs the box material region of "
+                           "'Custom problem/Material lower corner' and "
+                           "'Material upper corner' (Method = OTM and "
+                           "Unified mesh only the material, tractions act on "
+                           "the region's sides), which Bodies replace: use "
+                           "Method = MPM with Bodies, or no Bodies."));
     if (region_lower.empty() && region_upper.empty())
       return this->grid_box;
     const auto lower =
@@ -175,7 +192,131 @@ namespace MpmOtm
   Tensor<1, dim>
   CustomProblem<dim>::initial_velocity(const Point<dim> &X) const
   {
-    return evaluate(*velocity, X, 0.);
+    if (bodies.empty())
+      return velocity->vector_value(X);
+    const unsigned int body = body_containing(X);
+    Assert(body < bodies.size(), ExcInternalError());
+    return bodies[body].initial_velocity(X);
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  CustomProblem<dim>::n_bodies() const
+  {
+    return bodies.empty() ? 1 : bodies.size();
+  }
+
+
+
+  template <int dim>
+  std::string
+  CustomProblem<dim>::body_name(const unsigned int body) const
+  {
+    return bodies.empty() ? Problem<dim>::body_name(body) :
+                            "Body " + bodies[body].name();
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  CustomProblem<dim>::body_containing(const Point<dim> &X) const
+  {
+    if (bodies.empty())
+      return Problem<dim>::body_containing(X);
+    unsigned int found = numbers::invalid_unsigned_int;
+    for (unsigned int b = 0; b < bodies.size(); ++b)
+      if (bodies[b].contains(X))
+        {
+          AssertThrow(
+            found == numbers::invalid_unsigned_int,
+            ExcMessage(
+              "Body " + bodies[found].name() + " and Body " + bodies[b].name() +
+              " overlap at (" + Utilities::to_string(X[0]) +
+              (dim > 1 ? ", " + Utilities::to_string(X[1]) : std::string()) +
+              (dim > 2 ? ", " + Utilities::to_string(X[2]) : std::string()) +
+              "): a material point can belong to one body "
+              "only; change their shapes so that they do "
+              "not overlap."));
+          found = b;
+        }
+    return found;
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  CustomProblem<dim>::material_id(const unsigned int body) const
+  {
+    return bodies.empty() ? 0 : bodies[body].material_id();
+  }
+
+
+
+  template <int dim>
+  double
+  CustomProblem<dim>::vertical_stress(const Point<dim> &X) const
+  {
+    // The density along the line is piecewise constant: integrate it in
+    // steps, locating every change of body by bisection.
+    const auto density = [&](const Point<dim> &x) {
+      const unsigned int body = body_containing(x);
+      return body == numbers::invalid_unsigned_int ?
+               0. :
+               (*this->materials)[bodies[body].material_id()].density();
+    };
+    const double top = this->grid_box.get_boundary_points().second[dim - 1];
+    const unsigned int n_steps = 400;
+    const double       step    = std::max(top - X[dim - 1], 0.) / n_steps;
+    double             weight  = 0;
+    Point<dim>         lower   = X;
+    double             rho     = density(lower);
+    for (unsigned int k = 0; k < n_steps; ++k)
+      {
+        Point<dim> upper       = X;
+        upper[dim - 1]         = X[dim - 1] + (k + 1) * step;
+        const double rho_upper = density(upper);
+        if (rho_upper == rho)
+          weight += rho * step;
+        else
+          {
+            double a = lower[dim - 1], b = upper[dim - 1];
+            for (unsigned int i = 0; i < 50 && b - a > 1e-14 * step; ++i)
+              {
+                Point<dim> middle                = X;
+                middle[dim - 1]                  = 0.5 * (a + b);
+                (density(middle) == rho ? a : b) = middle[dim - 1];
+              }
+            weight +=
+              rho * (a - lower[dim - 1]) + rho_upper * (upper[dim - 1] - a);
+            rho = rho_upper;
+          }
+        lower = upper;
+      }
+    return this->gravity_vector[dim - 1] * weight;
+  }
+
+
+
+  template <int dim>
+  std::pair<SymmetricTensor<2, dim>, double>
+  CustomProblem<dim>::initial_stress(const Point<dim>  &X,
+                                     const unsigned int body) const
+  {
+    if (bodies.empty())
+      return Problem<dim>::initial_stress(X, body);
+    if (!bodies[body].has_geostatic_stress())
+      return bodies[body].initial_stress(X);
+    const double            sigma_v = vertical_stress(X);
+    const double            K0      = bodies[body].lateral_stress_ratio();
+    SymmetricTensor<2, dim> sigma;
+    for (unsigned int d = 0; d + 1 < dim; ++d)
+      sigma[d][d] = K0 * sigma_v;
+    sigma[dim - 1][dim - 1] = sigma_v;
+    return {sigma, K0 * sigma_v};
   }
 
 
@@ -184,7 +325,7 @@ namespace MpmOtm
   bool
   CustomProblem<dim>::has_body_force() const
   {
-    return true;
+    return !force->is_zero();
   }
 
 
@@ -193,7 +334,7 @@ namespace MpmOtm
   Tensor<1, dim>
   CustomProblem<dim>::body_force(const Point<dim> &X, const double time) const
   {
-    return evaluate(*force, X, time);
+    return force->vector_value(X, time);
   }
 
 
@@ -221,7 +362,7 @@ namespace MpmOtm
   CustomProblem<dim>::traction(const types::boundary_id,
                                const double time) const
   {
-    return evaluate(*traction_function, Point<dim>(), time);
+    return traction_function->vector_value(Point<dim>(), time);
   }
 
 
@@ -249,7 +390,7 @@ namespace MpmOtm
   CustomProblem<dim>::exact_displacement(const Point<dim> &X,
                                          const double      time) const
   {
-    return evaluate(*displacement, X, time);
+    return displacement->vector_value(X, time);
   }
 
 

@@ -1,10 +1,128 @@
 #include <deal.II/base/utilities.h>
 
-#include <mpm_otm/materials/material.h>
+#include <mpm_otm/materials/material_library.h>
 #include <mpm_otm/problems/problem.h>
 
 namespace MpmOtm
 {
+  template <int dim>
+  void
+  Problem<dim>::declare_common_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Gravity");
+    prm.declare_entry("Vector",
+                      "0",
+                      Patterns::List(Patterns::Double(), 1, dim),
+                      "Gravitational acceleration g (m/s^2), one value per "
+                      "direction, e.g. '0, -9.81' (a single value: the same "
+                      "in every direction; 0: no gravity). It acts on every "
+                      "material point as the body force m g, in addition to "
+                      "the problem's own body force.");
+    prm.declare_entry("Ramp time",
+                      "0",
+                      Patterns::Double(0.),
+                      "Gravity grows linearly from 0 to its full value over "
+                      "this time (s) from t = 0; 0: full from the start.");
+    prm.leave_subsection();
+  }
+
+
+
+  template <int dim>
+  void
+  Problem<dim>::parse(ParameterHandler           &prm,
+                      const MaterialLibrary<dim> &material_library)
+  {
+    materials = &material_library;
+    prm.enter_subsection("Gravity");
+    const auto values = Utilities::string_to_double(
+      Utilities::split_string_list(prm.get("Vector")));
+    gravity_ramp_time = prm.get_double("Ramp time");
+    prm.leave_subsection();
+    AssertThrow(values.size() == 1 || values.size() == dim,
+                ExcMessage("Gravity/Vector needs one value or " +
+                           std::to_string(dim) +
+                           " values (one per direction)."));
+    for (unsigned int d = 0; d < dim; ++d)
+      gravity_vector[d] = values.size() == dim ? values[d] : values[0];
+    parse_parameters(prm);
+  }
+
+
+
+  template <int dim>
+  Tensor<1, dim>
+  Problem<dim>::gravity(const double time) const
+  {
+    if (gravity_ramp_time > 0. && time < gravity_ramp_time)
+      return (time / gravity_ramp_time) * gravity_vector;
+    return gravity_vector;
+  }
+
+
+
+  template <int dim>
+  bool
+  Problem<dim>::has_gravity() const
+  {
+    return gravity_vector.norm() > 0.;
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  Problem<dim>::n_bodies() const
+  {
+    return 1;
+  }
+
+
+
+  template <int dim>
+  std::string
+  Problem<dim>::body_name(const unsigned int) const
+  {
+    return "material region";
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  Problem<dim>::body_containing(const Point<dim> &X) const
+  {
+    return material_region().point_inside(X) ? 0 :
+                                               numbers::invalid_unsigned_int;
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  Problem<dim>::material_id(const unsigned int) const
+  {
+    return 0;
+  }
+
+
+
+  template <int dim>
+  std::pair<SymmetricTensor<2, dim>, double>
+  Problem<dim>::initial_stress(const Point<dim> &, const unsigned int) const
+  {
+    return {SymmetricTensor<2, dim>(), 0.};
+  }
+
+  template <int dim>
+  bool
+  Problem<dim>::runs_on_any_grid() const
+  {
+    return false;
+  }
+
+
+
   template <int dim>
   void
   Problem<dim>::initialize(const Material<dim> &, const BoundingBox<dim> &box)
@@ -113,10 +231,12 @@ namespace MpmOtm
                                "components', e.g. '0: x, y; 2: y'."));
         FixedComponents<dim> fixed;
         const int            id = Utilities::string_to_int(parts[0]);
-        AssertThrow(id >= 0 && id < static_cast<int>(2 * dim),
+        AssertThrow(id >= 0,
                     ExcMessage(entry + ": boundary id <" + parts[0] +
-                               "> must be between 0 and " +
-                               std::to_string(2 * dim - 1) + "."));
+                               "> must be a non-negative integer (box "
+                               "grids: 0 to " +
+                               std::to_string(2 * dim - 1) +
+                               "; Mesh file: its physical tags)."));
         fixed.boundary_id = id;
         fixed.fixed.fill(false);
         for (const auto &component : Utilities::split_string_list(parts[1]))

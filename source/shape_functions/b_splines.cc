@@ -5,7 +5,7 @@
 #include <deal.II/particles/particle_handler.h>
 
 #include <mpm_otm/base/plugins.h>
-#include <mpm_otm/grid_system/background_grid.h>
+#include <mpm_otm/grid/background_grid.h>
 #include <mpm_otm/material_points/material_points.h>
 #include <mpm_otm/shape_functions/b_splines.h>
 
@@ -97,6 +97,12 @@ namespace MpmOtm
     AssertThrow(p >= 1 && p <= max_degree,
                 ExcMessage("B-spline degree must be between 1 and " +
                            std::to_string(max_degree) + "."));
+    AssertThrow(grid.is_box(),
+                ExcMessage("Shape functions = B-spline need a box grid "
+                           "(tensor-product knot spans from Mesh/Lower "
+                           "corner, Upper corner and Subdivisions), not a "
+                           "Mesh/Mesh file; use Shape functions = linear "
+                           "there."));
     AssertThrow(!grid.is_simplex(),
                 ExcMessage("Shape functions = B-spline need Mesh/Cell type = "
                            "hypercube (tensor-product knot spans)."));

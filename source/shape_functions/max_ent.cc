@@ -5,7 +5,7 @@
 #include <deal.II/particles/particle_handler.h>
 
 #include <mpm_otm/base/plugins.h>
-#include <mpm_otm/grid_system/background_grid.h>
+#include <mpm_otm/grid/background_grid.h>
 #include <mpm_otm/material_points/material_points.h>
 #include <mpm_otm/shape_functions/max_ent.h>
 

@@ -3,7 +3,7 @@
 #include <deal.II/particles/particle_handler.h>
 
 #include <mpm_otm/base/plugins.h>
-#include <mpm_otm/grid_system/background_grid.h>
+#include <mpm_otm/grid/background_grid.h>
 #include <mpm_otm/material_points/material_points.h>
 #include <mpm_otm/shape_functions/powell_sabin.h>
 
@@ -279,7 +279,8 @@ namespace MpmOtm
   {
     AssertThrow(grid.is_simplex(),
                 ExcMessage("Shape functions = Powell-Sabin need Mesh/Cell "
-                           "type = simplex (triangles)."));
+                           "type = simplex (triangles), or a Mesh/Mesh file "
+                           "of triangles."));
     initialize(grid.triangulation());
   }
 

@@ -7,17 +7,21 @@
 #include <mpm_otm/algorithms/optimal_transportation_update.h>
 #include <mpm_otm/algorithms/time_stepper.h>
 #include <mpm_otm/base/plugins.h>
-#include <mpm_otm/grid_system/background_grid.h>
+#include <mpm_otm/boundary_conditions/boundary_conditions.h>
+#include <mpm_otm/grid/background_grid.h>
+#include <mpm_otm/grid_system/local_damping.h>
 #include <mpm_otm/grid_system/mass_matrix.h>
 #include <mpm_otm/grid_system/nodal_system.h>
 #include <mpm_otm/io/output_writer.h>
 #include <mpm_otm/material_points/material_points.h>
-#include <mpm_otm/materials/material.h>
+#include <mpm_otm/materials/material_library.h>
+#include <mpm_otm/problems/body.h>
 #include <mpm_otm/problems/problem.h>
 #include <mpm_otm/shape_functions/b_splines.h>
 #include <mpm_otm/shape_functions/shape_functions.h>
 #include <mpm_otm/simulator/simulator.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <iomanip>
@@ -87,8 +91,10 @@ namespace MpmOtm
 
   template <int dim>
   void
-  Simulator<dim>::declare_parameters(ParameterHandler &prm)
+  Simulator<dim>::declare_parameters(ParameterHandler      &prm,
+                                     const SubsectionNames &names)
   {
+    SubsectionNames::declare_parameters(prm);
     prm.declare_entry("Dimension",
                       "1",
                       Patterns::Integer(1, 3),
@@ -158,17 +164,22 @@ namespace MpmOtm
 
     BackgroundGrid<dim>::declare_parameters(prm);
     MaterialPoints<dim>::declare_parameters(prm);
-    Material<dim>::declare_common_parameters(
-      prm,
-      PluginRegistry<Material<dim>>::selection(),
-      PluginRegistry<Material<dim>>::documentation());
+    MaterialLibrary<dim>::declare_parameters(prm, names.materials);
+    Problem<dim>::declare_common_parameters(prm);
+    for (const auto &name : names.bodies)
+      {
+        prm.enter_subsection("Body " + name);
+        Body<dim>::declare_parameters(prm);
+        prm.leave_subsection();
+      }
     OutputWriter<dim>::declare_parameters(prm);
+    BoundaryConditions<dim>::declare_parameters(prm, names.boundaries);
+    LocalDamping<dim>::declare_parameters(prm);
 
     PluginRegistry<Problem<dim>>::declare_parameters(prm);
     PluginRegistry<NodalUpdate<dim>>::declare_parameters(prm);
     PluginRegistry<ShapeFunctions<dim>>::declare_parameters(prm);
     PluginRegistry<MassMatrix<dim>>::declare_parameters(prm);
-    PluginRegistry<Material<dim>>::declare_parameters(prm);
   }
 
 
@@ -179,9 +190,11 @@ namespace MpmOtm
   {
     AssertThrow(prm.get_integer("Dimension") == dim, ExcInternalError());
 
+    materials = std::make_unique<MaterialLibrary<dim>>();
+    materials->parse_parameters(prm);
     problem_description =
       PluginRegistry<Problem<dim>>::create(prm.get("Problem"));
-    problem_description->parse_parameters(prm);
+    problem_description->parse(prm, *materials);
     shape_functions =
       PluginRegistry<ShapeFunctions<dim>>::create(prm.get("Shape functions"));
     shape_functions->parse_parameters(prm);
@@ -242,11 +255,6 @@ namespace MpmOtm
       PluginRegistry<MassMatrix<dim>>::create(prm.get("Mass matrix"));
     deactivation_threshold = prm.get_double("Deactivation threshold");
 
-    prm.enter_subsection("Material");
-    material = PluginRegistry<Material<dim>>::create(prm.get("Model"));
-    prm.leave_subsection();
-    material->parse_parameters(prm);
-
     prm.enter_subsection("Time");
     end_time  = prm.get_double("End time");
     time_step = prm.get_double("Time step");
@@ -255,10 +263,26 @@ namespace MpmOtm
 
     grid = std::make_unique<BackgroundGrid<dim>>();
     grid->parse_parameters(prm);
+    AssertThrow(grid->is_box() || problem_description->runs_on_any_grid(),
+                ExcMessage("Mesh/Mesh file: Problem = " + prm.get("Problem") +
+                           " is a benchmark defined on a box grid (its "
+                           "boundary ids are the box's sides 0 to " +
+                           std::to_string(2 * dim - 1) +
+                           "); on the mesh of a file use Problem = custom."));
     points = std::make_unique<MaterialPoints<dim>>();
     points->parse_parameters(prm);
     output = std::make_unique<OutputWriter<dim>>();
     output->parse_parameters(prm);
+    boundary_conditions = std::make_unique<BoundaryConditions<dim>>();
+    boundary_conditions->parse_parameters(prm);
+    AssertThrow(boundary_conditions->empty() || method == "MPM",
+                ExcMessage("Boundaries: the boundary conditions of the entry "
+                           "'Boundaries' act on the nodes of a fixed grid and "
+                           "need Method = MPM; OTM and Unified move the grid "
+                           "with the material (use the problem's fixed "
+                           "components there)."));
+    damping = std::make_unique<LocalDamping<dim>>();
+    damping->parse_parameters(prm);
   }
 
 
@@ -270,7 +294,7 @@ namespace MpmOtm
     grid->create(communicator, grid_motion->moves_vertices());
 
     const double h           = grid->minimal_cell_size();
-    const double wave_speed  = material->wave_speed();
+    const double wave_speed  = materials->maximal_wave_speed();
     const double critical_dt = h / wave_speed;
     if (time_step > critical_dt)
       {
@@ -284,8 +308,8 @@ namespace MpmOtm
         AssertThrow(false, ExcMessage(message.str()));
       }
 
-    problem_description->initialize(*material, grid->box());
-    if (grid_motion->moves_vertices())
+    problem_description->initialize(materials->default_material(), grid->box());
+    if (grid_motion->moves_vertices() && grid->is_box())
       {
         // OTM and the unified approach mesh the material domain only: a
         // node without material would stay behind while the cells around
@@ -315,7 +339,23 @@ namespace MpmOtm
             AssertThrow(false, ExcMessage(message.str()));
           }
       }
-    points->seed(*grid, *material, *problem_description);
+    points->seed(*grid, *materials, *problem_description);
+    if (grid_motion->moves_vertices() && !grid->is_box())
+      {
+        // The same condition on a Mesh file: no point of the seeding
+        // pattern may lie outside the material.
+        const auto outside = points->n_pattern_points_outside_bodies();
+        AssertThrow(outside == 0,
+                    ExcMessage(
+                      "Method = OTM and Unified move the grid with the "
+                      "material, so the material must fill the grid, but " +
+                      std::to_string(outside) +
+                      " points of the seeding pattern in the cells of "
+                      "Mesh/Mesh file <" +
+                      grid->mesh_file() +
+                      "> lie in no body. Mesh only the material, or let the "
+                      "bodies cover every cell."));
+      }
     AssertThrow(points->n_global_points() > 0,
                 ExcMessage("No material point was created: the problem's "
                            "material region contains no block centre of "
@@ -323,19 +363,48 @@ namespace MpmOtm
     Timer shape_function_timer(communicator, true);
     shape_functions->initialize(*grid);
     shape_function_timer.stop();
+    boundary_conditions->setup(*shape_functions, *grid);
+    auto fixed_components = problem_description->fixed_components();
+    {
+      const auto grid_ids = grid->boundary_ids();
+      for (const auto &fixed : fixed_components)
+        if (!std::binary_search(grid_ids.begin(),
+                                grid_ids.end(),
+                                fixed.boundary_id))
+          {
+            std::string ids;
+            for (const auto id : grid_ids)
+              ids += (ids.empty() ? "" : ", ") + std::to_string(id);
+            AssertThrow(false,
+                        ExcMessage(
+                          "The problem's fixed components (Custom "
+                          "problem/Fixed components) name boundary id " +
+                          std::to_string(fixed.boundary_id) +
+                          ", which no boundary face of the grid has; the "
+                          "grid's boundary ids are " +
+                          ids +
+                          " (for a Mesh file its physical tags, 0 on "
+                          "untagged faces)."));
+          }
+    }
+    for (const auto &fixed : boundary_conditions->fixed_components())
+      fixed_components.push_back(fixed);
     system = std::make_unique<NodalSystem<dim>>();
     system->setup(*shape_functions,
-                  problem_description->fixed_components(),
+                  fixed_components,
                   deactivation_threshold,
                   mass_matrix->needs_material_boundary());
     grid_motion->initialize(*grid,
                             *shape_functions,
                             *system,
-                            material->wave_speed() * time_step);
+                            materials->maximal_wave_speed() * time_step);
     output->initialize(prm,
                        problem_description->has_exact_solution(),
                        problem_description->has_exact_stress(),
-                       communicator);
+                       communicator,
+                       *materials,
+                       boundary_conditions->names(),
+                       problem_description->has_gravity());
     output->write_powell_sabin_basis(*shape_functions);
     current_time = 0;
 
@@ -373,8 +442,10 @@ namespace MpmOtm
                                *mass_matrix,
                                *nodal_update,
                                *grid_motion,
-                               *material,
+                               *materials,
                                *problem_description,
+                               *boundary_conditions,
+                               *damping,
                                timer);
 
       AssertThrow(end_time / time_step < 1e9,
@@ -387,9 +458,12 @@ namespace MpmOtm
       const auto report = [&](const unsigned int step) {
         TimerOutput::Scope scope(timer, "output");
         statistics.compute(*points,
-                           *material,
+                           *materials,
                            *problem_description,
                            current_time);
+        statistics.boundary_names = boundary_conditions->names();
+        statistics.boundary_reactions =
+          boundary_conditions->reactions_and_displacements();
         output->write(step,
                       current_time,
                       *points,
@@ -469,6 +543,15 @@ namespace MpmOtm
   Simulator<dim>::nodal_system() const
   {
     return *system;
+  }
+
+
+
+  template <int dim>
+  const MaterialLibrary<dim> &
+  Simulator<dim>::material_library() const
+  {
+    return *materials;
   }
 
 

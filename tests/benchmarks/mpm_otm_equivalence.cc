@@ -16,7 +16,7 @@
 
 #include <deal.II/base/mpi.h>
 
-#include <mpm_otm/grid_system/background_grid.h>
+#include <mpm_otm/grid/background_grid.h>
 #include <mpm_otm/grid_system/nodal_system.h>
 #include <mpm_otm/shape_functions/shape_functions.h>
 

@@ -9,7 +9,7 @@
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_simplex_p.h>
 
-#include <mpm_otm/grid_system/background_grid.h>
+#include <mpm_otm/grid/background_grid.h>
 #include <mpm_otm/grid_system/nodal_system.h>
 #include <mpm_otm/material_points/material_points.h>
 #include <mpm_otm/shape_functions/linear_lagrange.h>

@@ -18,14 +18,32 @@ make_material(const std::string &model, const double E, const double nu)
     prm,
     PluginRegistry<Material<dim>>::selection(),
     "");
-  prm.enter_subsection("Material");
   prm.set("Model", model);
   prm.set("Young's modulus", E);
   prm.set("Poisson's ratio", nu);
-  prm.leave_subsection();
   auto material = PluginRegistry<Material<dim>>::create(model);
   material->parse_parameters(prm);
   return material;
+}
+
+/**
+ * Update @p sigma (a state without internal variables) and return the
+ * out-of-plane stress.
+ */
+template <int dim>
+double
+update(const Material<dim>     &model,
+       const Tensor<2, dim>     F,
+       const Tensor<2, dim>    &velocity_gradient,
+       SymmetricTensor<2, dim> &sigma,
+       const double             out_of_plane_stress = 0.)
+{
+  StressState<dim> state;
+  state.stress              = sigma;
+  state.out_of_plane_stress = out_of_plane_stress;
+  model.update_stress(F, velocity_gradient, 1., state);
+  sigma = state.stress;
+  return state.out_of_plane_stress;
 }
 
 void
@@ -60,17 +78,20 @@ main(int argc, char **argv)
     SymmetricTensor<2, 2> sigma;
     SymmetricTensor<2, 2> expected;
     // sigma = lambda/J tr(eps) F + 2 mu/J F eps, eps = diag(0.1, 0), J = 1.1
-    model->update_stress(stretch, no_rate, 1., sigma);
+    const double zz = update(*model, stretch, no_rate, sigma);
+    // Plane strain: sigma_zz = lambda / J tr(eps).
+    check(std::abs(zz - 4. / 1.1) < 1e-12, "linear elastic, sigma_zz");
+    deallog << "linear elastic, stretch, sigma_zz: " << zz << std::endl;
     expected[0][0] = 4. + 8.;
     expected[1][1] = 40. * 0.1 / 1.1;
     check_stress("linear elastic, stretch", sigma, expected);
     // eps = [[0, 0.1], [0.1, 0]]: sigma = 2 mu F eps = [[1.6, 8], [8, 0]]
-    model->update_stress(shear, no_rate, 1., sigma);
+    update(*model, shear, no_rate, sigma);
     expected       = SymmetricTensor<2, 2>();
     expected[0][0] = 1.6;
     expected[0][1] = 8.;
     check_stress("linear elastic, shear", sigma, expected);
-    model->update_stress(unit_symmetric_tensor<2>(), no_rate, 1., sigma);
+    update<2>(*model, unit_symmetric_tensor<2>(), no_rate, sigma);
     check_stress("linear elastic, F = I", sigma, SymmetricTensor<2, 2>());
   }
   {
@@ -78,12 +99,15 @@ main(int argc, char **argv)
     SymmetricTensor<2, 2> sigma;
     SymmetricTensor<2, 2> expected;
     // sigma = lambda ln(J)/J I + mu/J (F F^T - I)
-    model->update_stress(stretch, no_rate, 1., sigma);
+    const double zz            = update(*model, stretch, no_rate, sigma);
     const double pressure_part = 40. * std::log(1.1) / 1.1;
-    expected[0][0]             = pressure_part + 40. / 1.1 * 0.21;
-    expected[1][1]             = pressure_part;
+    // Plane strain: b_zz = 1, sigma_zz = lambda ln(J) / J.
+    check(std::abs(zz - pressure_part) < 1e-12, "neo-Hookean, sigma_zz");
+    deallog << "neo-Hookean, stretch, sigma_zz: " << zz << std::endl;
+    expected[0][0] = pressure_part + 40. / 1.1 * 0.21;
+    expected[1][1] = pressure_part;
     check_stress("neo-Hookean, stretch", sigma, expected);
-    model->update_stress(unit_symmetric_tensor<2>(), no_rate, 1., sigma);
+    update<2>(*model, unit_symmetric_tensor<2>(), no_rate, sigma);
     check_stress("neo-Hookean, F = I", sigma, SymmetricTensor<2, 2>());
   }
   {
@@ -94,7 +118,11 @@ main(int argc, char **argv)
     // diag(0.01, 0).
     Tensor<2, 2> rate;
     rate[0][0] = 0.01;
-    model->update_stress(unit_symmetric_tensor<2>(), rate, 1., sigma);
+    const double zz =
+      update<2>(*model, unit_symmetric_tensor<2>(), rate, sigma);
+    // Plane strain: d sigma_zz = lambda tr(d eps).
+    check(std::abs(zz - 0.4) < 1e-12, "hypo-elastic, sigma_zz");
+    deallog << "hypo-elastic, stretching, sigma_zz: " << zz << std::endl;
     expected[0][0] = 1.2;
     expected[1][1] = 0.4;
     check_stress("hypo-elastic, stretching", sigma, expected);
@@ -105,13 +133,13 @@ main(int argc, char **argv)
     spin[1][0]  = -0.01;
     sigma       = SymmetricTensor<2, 2>();
     sigma[0][0] = 1.;
-    model->update_stress(unit_symmetric_tensor<2>(), spin, 1., sigma);
+    update<2>(*model, unit_symmetric_tensor<2>(), spin, sigma);
     expected       = SymmetricTensor<2, 2>();
     expected[0][0] = 1.;
     expected[0][1] = -0.01;
     check_stress("hypo-elastic, spin", sigma, expected);
     sigma = SymmetricTensor<2, 2>();
-    model->update_stress(unit_symmetric_tensor<2>(), no_rate, 1., sigma);
+    update<2>(*model, unit_symmetric_tensor<2>(), no_rate, sigma);
     check_stress("hypo-elastic, no deformation",
                  sigma,
                  SymmetricTensor<2, 2>());
@@ -123,7 +151,7 @@ main(int argc, char **argv)
     Tensor<2, 1> F;
     F[0][0] = 1.1;
     SymmetricTensor<2, 1> sigma;
-    model->update_stress(F, Tensor<2, 1>(), 1., sigma);
+    update<1>(*model, F, Tensor<2, 1>(), sigma);
     check(std::abs(sigma[0][0] - 10.) < 1e-12, "1D linear elastic");
     deallog << "1D linear elastic, F = 1.1: " << sigma[0][0] << std::endl;
   }

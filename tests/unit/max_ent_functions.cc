@@ -27,7 +27,7 @@
 //   = 1 / (x_n - x_e), whatever the prior. Checked against these values and
 //   against one-sided second-order finite differences from inside.
 
-#include <mpm_otm/grid_system/background_grid.h>
+#include <mpm_otm/grid/background_grid.h>
 #include <mpm_otm/material_points/material_points.h>
 #include <mpm_otm/shape_functions/max_ent.h>
 

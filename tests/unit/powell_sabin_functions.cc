@@ -33,7 +33,7 @@
 
 #include <deal.II/grid/tria.h>
 
-#include <mpm_otm/grid_system/background_grid.h>
+#include <mpm_otm/grid/background_grid.h>
 #include <mpm_otm/grid_system/nodal_system.h>
 #include <mpm_otm/material_points/material_points.h>
 #include <mpm_otm/shape_functions/powell_sabin.h>

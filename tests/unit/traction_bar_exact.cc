@@ -33,8 +33,8 @@ struct Bar
     problem->parse_parameters(prm);
     prm.enter_subsection("Material");
     material = PluginRegistry<Material<1>>::create(prm.get("Model"));
-    prm.leave_subsection();
     material->parse_parameters(prm);
+    prm.leave_subsection();
     problem->initialize(*material,
                         BoundingBox<1>(
                           std::make_pair(Point<1>(lower), Point<1>(upper))));

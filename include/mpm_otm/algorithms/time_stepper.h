@@ -5,6 +5,8 @@
 
 #include <mpm_otm/algorithms/grid_motion.h>
 #include <mpm_otm/algorithms/nodal_update.h>
+#include <mpm_otm/boundary_conditions/boundary_conditions.h>
+#include <mpm_otm/grid_system/local_damping.h>
 #include <mpm_otm/grid_system/mass_matrix.h>
 #include <mpm_otm/grid_system/nodal_system.h>
 #include <mpm_otm/shape_functions/particle_shape_data.h>
@@ -12,7 +14,7 @@
 namespace MpmOtm
 {
   template <int dim>
-  class Material;
+  class MaterialLibrary;
   template <int dim>
   class MaterialPoints;
   template <int dim>
@@ -28,13 +30,15 @@ namespace MpmOtm
    *  1. evaluate the shape functions at the material points (once per step,
    *     on the current grid);
    *  2. assemble nodal masses, momenta and forces (Eqs. 19-21 / 48-50);
-   *  3. solve the nodal accelerations with the mass-matrix strategy (Eq. 22)
-   *     if the nodal update uses them (OTM folds the force into its one
-   *     solve, Eq. 51);
+   *  3. damp the nodal forces (LocalDamping, if asked for), solve the nodal
+   *     accelerations with the mass-matrix strategy (Eq. 22) if the nodal
+   *     update uses them (OTM folds the force into its one solve, Eq. 51)
+   *     and correct them for the boundary conditions (BoundaryConditions);
    *  4. advance the particle velocities, v_p += dt sum_i phi_i a_i (Eq. 27),
    *     if the nodal update asks for it (USL, MUSL, unified);
    *  5. nodal velocities v_i^{s+1} from the nodal-update strategy (USL,
-   *     MUSL, OTM Eq. 51), the nodal displacement being dt v_i^{s+1};
+   *     MUSL, OTM Eq. 51), constrained by the boundary conditions, the nodal
+   *     displacement being dt v_i^{s+1};
    *  6. move the points, x_p += dt sum_i phi_i v_i^{s+1} (Eqs. 26 / 52),
    *     update F_p (Eqs. 28-29 / 55), V_p = det(F_p) V_p^0 (Eqs. 30 / 53)
    *     and the stress; for OTM v_p = (x_p^{s+1} - x_p^s) / dt (Eq. 57);
@@ -46,15 +50,17 @@ namespace MpmOtm
   class TimeStepper
   {
   public:
-    TimeStepper(MaterialPoints<dim>       &material_points,
-                const ShapeFunctions<dim> &shape_functions,
-                NodalSystem<dim>          &system,
-                MassMatrix<dim>           &mass_matrix,
-                const NodalUpdate<dim>    &nodal_update,
-                GridMotion<dim>           &grid_motion,
-                const Material<dim>       &material,
-                const Problem<dim>        &problem,
-                TimerOutput               &timer);
+    TimeStepper(MaterialPoints<dim>        &material_points,
+                const ShapeFunctions<dim>  &shape_functions,
+                NodalSystem<dim>           &system,
+                MassMatrix<dim>            &mass_matrix,
+                const NodalUpdate<dim>     &nodal_update,
+                GridMotion<dim>            &grid_motion,
+                const MaterialLibrary<dim> &materials,
+                const Problem<dim>         &problem,
+                BoundaryConditions<dim>    &boundary_conditions,
+                const LocalDamping<dim>    &damping,
+                TimerOutput                &timer);
 
     /**
      * Advance from @p time to @p time + @p dt.
@@ -69,16 +75,18 @@ namespace MpmOtm
     void
     update_particles(const double dt, const bool velocity_from_displacement);
 
-    MaterialPoints<dim>       &material_points;
-    const ShapeFunctions<dim> &shape_functions;
-    NodalSystem<dim>          &system;
-    MassMatrix<dim>           &mass_matrix;
-    const NodalUpdate<dim>    &nodal_update;
-    GridMotion<dim>           &grid_motion;
-    const Material<dim>       &material;
-    const Problem<dim>        &problem;
-    TimerOutput               &timer;
-    ParticleShapeData<dim>     data;
+    MaterialPoints<dim>        &material_points;
+    const ShapeFunctions<dim>  &shape_functions;
+    NodalSystem<dim>           &system;
+    MassMatrix<dim>            &mass_matrix;
+    const NodalUpdate<dim>     &nodal_update;
+    GridMotion<dim>            &grid_motion;
+    const MaterialLibrary<dim> &materials;
+    const Problem<dim>         &problem;
+    BoundaryConditions<dim>    &boundary_conditions;
+    const LocalDamping<dim>    &damping;
+    TimerOutput                &timer;
+    ParticleShapeData<dim>      data;
 
     /**
      * Length of the previous step (0 before the first).

@@ -67,8 +67,9 @@ namespace MpmOtm
 
     /**
      * Start the assembly of lumped masses sum_p m_p phi_i (journal Eq. 17),
-     * momenta (Eq. 20) and forces f_i = sum_p [phi_i (m_p b + t_p) - V_p
-     * sigma_p grad phi_i] (Eq. 21 and thesis Eq. 2.28) at @p time. The
+     * momenta (Eq. 20) and forces f_i = sum_p [phi_i (m_p (b + g) + t_p) -
+     * V_p sigma_p grad phi_i] (Eq. 21 and thesis Eq. 2.28) at @p time, g
+     * the problem's gravity. The
      * tractions t_p of the boundary points are included if
      * @p tractions_on_points (a fixed grid, whose boundary is not the
      * material's); otherwise the caller adds them on the grid's boundary

@@ -23,6 +23,8 @@ namespace MpmOtm
   class ShapeFunctions;
   template <int dim>
   class BackgroundGrid;
+  template <int dim>
+  class MaterialLibrary;
 
   /**
    * Everything a run writes to its output directory (ARCHITECTURE.md
@@ -51,13 +53,19 @@ namespace MpmOtm
 
     /**
      * Create the directory, write parameters.prm and the header of
-     * statistics.csv.
+     * statistics.csv; the points' materials are those of @p materials.
+     * statistics.csv gets the gravitational energy if @p has_gravity and the
+     * reaction force and displacement of each boundary condition in
+     * @p boundary_names.
      */
     void
-    initialize(const ParameterHandler &prm,
-               const bool              has_displacement_error,
-               const bool              has_stress_error,
-               const MPI_Comm          communicator);
+    initialize(const ParameterHandler         &prm,
+               const bool                      has_displacement_error,
+               const bool                      has_stress_error,
+               const MPI_Comm                  communicator,
+               const MaterialLibrary<dim>     &materials,
+               const std::vector<std::string> &boundary_names,
+               const bool                      has_gravity);
 
     /**
      * Whether @p step is an output step (@p last: the final step).
@@ -132,8 +140,10 @@ namespace MpmOtm
     bool         write_csv = false;
     bool         write_vtu = true;
     /// Where to show the Powell-Sabin functions (empty: nowhere).
-    std::vector<double> powell_sabin_basis_point;
-    MPI_Comm            mpi_communicator = MPI_COMM_WORLD;
+    std::vector<double>         powell_sabin_basis_point;
+    MPI_Comm                    mpi_communicator           = MPI_COMM_WORLD;
+    const MaterialLibrary<dim> *materials                  = nullptr;
+    bool                        write_gravitational_energy = false;
     std::vector<std::pair<double, std::string>> particle_records;
     std::vector<std::pair<double, std::string>> grid_records;
   };

@@ -1,10 +1,16 @@
 #ifndef mpm_otm_io_statistics_h
 #define mpm_otm_io_statistics_h
 
+#include <deal.II/base/tensor.h>
+
+#include <string>
+#include <utility>
+#include <vector>
+
 namespace MpmOtm
 {
   template <int dim>
-  class Material;
+  class MaterialLibrary;
   template <int dim>
   class MaterialPoints;
   template <int dim>
@@ -30,15 +36,24 @@ namespace MpmOtm
     double displacement_l2_error  = 0;
     bool   has_stress_error       = false;
     double stress_rms_error       = 0;
+    /// Potential energy of the points in the gravity field,
+    /// -sum_p m_p g . (x_p - X_p).
+    double gravitational_energy = 0;
+    /// Names of the named boundary conditions.
+    std::vector<std::string> boundary_names;
+    /// Their reactions (mean over the steps since the last output) and the
+    /// displacements of their prescribed components.
+    std::vector<std::pair<dealii::Tensor<1, dim>, dealii::Tensor<1, dim>>>
+      boundary_reactions;
 
     /**
      * Compute all measures over the points of every rank at @p time.
      */
     void
-    compute(const MaterialPoints<dim> &material_points,
-            const Material<dim>       &material,
-            const Problem<dim>        &problem,
-            const double               time);
+    compute(const MaterialPoints<dim>  &material_points,
+            const MaterialLibrary<dim> &materials,
+            const Problem<dim>         &problem,
+            const double                time);
   };
 } // namespace MpmOtm
 

@@ -25,17 +25,18 @@ namespace MpmOtm
   template <int dim>
   class BackgroundGrid;
   template <int dim>
-  class Material;
+  class MaterialLibrary;
   template <int dim>
   class Problem;
 
   /**
    * The material points: a thin layer over Particles::ParticleHandler with
    * the property layout of PropertyLayout. It seeds a regular pattern of
-   * points per block of the background grid (n per direction, thesis
-   * Sect. 2.4 and Fig. 4.2), gives them mass from density and volume, marks
-   * the points next to a traction boundary as boundary particles (thesis
-   * Sect. 2.4.1 / 2.5), and re-associates moved points with their cells.
+   * points per block of a box grid (n per direction, thesis Sect. 2.4 and
+   * Fig. 4.2) or per cell of a Mesh file (n per direction of the reference
+   * cell), gives them mass from density and volume, marks the points next to
+   * a traction boundary as boundary particles (thesis Sect. 2.4.1 / 2.5,
+   * box grids), and re-associates moved points with their cells.
    */
   template <int dim>
   class MaterialPoints
@@ -58,14 +59,18 @@ namespace MpmOtm
     parse_parameters(ParameterHandler &prm);
 
     /**
-     * Create the particle handler on @p grid and seed the points inside the
-     * problem's material region: X_p, V_p = block volume / points per
-     * block, m_p = rho V_p, v_p = v0(X_p), F_p = I, sigma_p = 0.
+     * Create the particle handler on @p grid and seed the points of the
+     * regular pattern of each block that lie in one of the problem's bodies:
+     * X_p, V_p = block volume / points per block, m_p = rho V_p with the
+     * density of the body's material, v_p = v0(X_p), F_p = I, sigma_p and
+     * the out-of-plane stress from the body's initial stress. On a Mesh file
+     * the pattern is that of each cell (insert_points_of_cells()). Stops if
+     * a body receives no point.
      */
     void
-    seed(const BackgroundGrid<dim> &grid,
-         const Material<dim>       &material,
-         const Problem<dim>        &problem);
+    seed(const BackgroundGrid<dim>  &grid,
+         const MaterialLibrary<dim> &materials,
+         const Problem<dim>         &problem);
 
     /**
      * Find the cell of every point after the points have moved. A point
@@ -98,13 +103,54 @@ namespace MpmOtm
     types::particle_index
     n_global_points() const;
 
+    /**
+     * Number of points of the seeding pattern (on all ranks) that lay in no
+     * body and were left out; 0 if the bodies fill the grid.
+     */
+    types::particle_index
+    n_pattern_points_outside_bodies() const;
+
 
   private:
+    /**
+     * Seed the cells of a Mesh file: per locally owned cell, n^dim points
+     * at reference positions mapped to the cell (quadrilaterals/hexahedra:
+     * the centres of the n^dim subcells of side 1/n of the reference cell;
+     * triangles/tetrahedra: the centroids of the n^dim equal simplices of
+     * the regular subdivision of the reference simplex), each with the
+     * volume |J(xi_p)| |cell| / sum_q |J(xi_q)| (|cell| / n^dim on affine
+     * cells), and the points outside every body left out. Stops for
+     * tractions (which need the box material region) and for
+     * per-direction Particles per cell.
+     */
+    void
+    insert_points_of_cells(const MaterialLibrary<dim> &materials,
+                           const Problem<dim>         &problem);
+
+    /**
+     * Stop if a body has received no point (points_per_body summed over
+     * the ranks).
+     */
+    void
+    check_every_body_has_points(const Problem<dim> &problem) const;
+
+    /**
+     * The properties of a new point at @p X in body @p body with volume
+     * @p volume (mass, stress, velocity, F = I, ...), traction data zero.
+     */
+    void
+    set_point_properties(const Point<dim>           &X,
+                         const unsigned int          body,
+                         const double                volume,
+                         const MaterialLibrary<dim> &materials,
+                         const Problem<dim>         &problem,
+                         std::vector<double>        &properties) const;
+
     void
     insert_points_of_block(
       const std::vector<unsigned int>                         &block,
       const typename Triangulation<dim>::active_cell_iterator &block_cell,
-      const Material<dim>                                     &material,
+      const MaterialLibrary<dim>                              &materials,
       const Problem<dim>                                      &problem);
 
     void
@@ -132,6 +178,10 @@ namespace MpmOtm
     std::vector<unsigned int>                                 n_per_direction;
     std::unique_ptr<Particles::ParticleHandler<dim>>          particles;
     std::vector<std::pair<types::particle_index, Point<dim>>> lost_points;
+    /// Points seeded in each of the problem's bodies (on all ranks).
+    std::vector<unsigned int> points_per_body;
+    /// Pattern points in no body (on all ranks after seeding).
+    types::particle_index points_outside_bodies = 0;
   };
 } // namespace MpmOtm
 

@@ -13,9 +13,12 @@ namespace MpmOtm
    * Where each quantity of a material point lives in the property array that
    * Particles::ParticleHandler stores for it (one contiguous slot of doubles
    * per particle). Position and reference position are kept by the particle
-   * handler itself; everything else is here. Tensors are stored row by row,
-   * the symmetric stress as its dim (dim + 1) / 2 independent components in
-   * the order of SymmetricTensor::unrolled_index.
+   * handler itself; the quantities every point has are here, at fixed
+   * places; after them, from n_fixed_properties on, come the internal
+   * variables the materials of the run ask for, whose places
+   * MaterialLibrary assigns at start-up. Tensors are stored row by row, the
+   * symmetric stress as its dim (dim + 1) / 2 independent components in the
+   * order of SymmetricTensor::unrolled_index.
    */
   template <int dim>
   struct PropertyLayout
@@ -30,8 +33,10 @@ namespace MpmOtm
     /// Boundary id whose traction acts on the particle (meaningful only
     /// when traction_measure > 0).
     static constexpr unsigned int traction_boundary = 3;
+    /// Number of the point's material in the run's MaterialLibrary.
+    static constexpr unsigned int material_id = 4;
     /// Initial position X_p (dim components).
-    static constexpr unsigned int initial_position = 4;
+    static constexpr unsigned int initial_position = 5;
     /// Velocity v_p (dim components).
     static constexpr unsigned int velocity = initial_position + dim;
     /// Deformation gradient F_p (dim x dim components).
@@ -40,8 +45,13 @@ namespace MpmOtm
     static constexpr unsigned int stress = deformation_gradient + dim * dim;
     /// Number of independent stress components.
     static constexpr unsigned int n_stress_components = dim * (dim + 1) / 2;
-    /// Number of doubles per particle.
-    static constexpr unsigned int n_properties = stress + n_stress_components;
+    /// The stress normal to the plane (2D, plane strain) or the line (1D,
+    /// uniaxial strain): StressState::out_of_plane_stress. 3D has none.
+    static constexpr unsigned int out_of_plane_stress =
+      stress + n_stress_components;
+    /// Number of doubles before the materials' internal variables.
+    static constexpr unsigned int n_fixed_properties =
+      out_of_plane_stress + (dim < 3 ? 1 : 0);
 
     /**
      * The vector of dim components that starts at @p first.
@@ -117,6 +127,26 @@ namespace MpmOtm
       for (unsigned int k = 0; k < n_stress_components; ++k)
         sigma.access_raw_entry(k) = properties[stress + k];
       return sigma;
+    }
+
+    /**
+     * The stress normal to the plane (0 in 3D).
+     */
+    template <typename Number>
+    static double
+    get_out_of_plane_stress(const ArrayView<Number> &properties)
+    {
+      return (dim < 3) ? properties[out_of_plane_stress] : 0.;
+    }
+
+    /**
+     * The material number of the point.
+     */
+    template <typename Number>
+    static unsigned int
+    get_material_id(const ArrayView<Number> &properties)
+    {
+      return static_cast<unsigned int>(properties[material_id]);
     }
 
     /**

@@ -1,19 +1,44 @@
 #ifndef mpm_otm_materials_material_h
 #define mpm_otm_materials_material_h
 
+#include <deal.II/base/array_view.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/tensor.h>
+
+#include <string>
+#include <vector>
 
 namespace MpmOtm
 {
   using namespace dealii;
 
   /**
+   * The stress state of one material point as a constitutive model updates
+   * it: the in-plane Cauchy stress, the stress normal to the plane of a 2D
+   * (plane strain) or 1D (uniaxial strain) model, and the model's own
+   * internal variables (Material::internal_variables()).
+   */
+  template <int dim>
+  struct StressState
+  {
+    /// Cauchy stress sigma_p (the dim x dim components).
+    SymmetricTensor<2, dim> stress;
+    /// sigma_zz in 2D (plane strain), the lateral stress sigma_yy = sigma_zz
+    /// in 1D (uniaxial strain); 0 and unused in 3D.
+    double out_of_plane_stress = 0.;
+    /// The model's internal variables, in the order of
+    /// Material::internal_variables().
+    ArrayView<double> internal_variables;
+  };
+
+  /**
    * A constitutive model: the Cauchy stress of a material point after a time
    * step, from its deformation gradient, velocity gradient and previous
-   * stress (journal Alg. 1, step 12). The elastic constants are shared by all
-   * models and read here from the "Material" subsection; in 2D the models are
+   * stress state (journal Alg. 1, step 12). The elastic constants and the
+   * density are shared by all models and read here; a model's own entries
+   * live in a subsection named after the model inside the material's
+   * subsection (e.g. "Material sand/Drucker-Prager"). In 2D the models are
    * plane strain, in 1D uniaxial strain.
    */
   template <int dim>
@@ -23,9 +48,9 @@ namespace MpmOtm
     virtual ~Material() = default;
 
     /**
-     * Declare the entries of subsection "Material" common to every model:
-     * Model (chosen among @p model_names), Young's modulus, Poisson's ratio,
-     * Density.
+     * Declare, in the current subsection of @p prm, the entries common to
+     * every model: Model (chosen among @p model_names), Young's modulus,
+     * Poisson's ratio, Density.
      */
     static void
     declare_common_parameters(ParameterHandler  &prm,
@@ -33,21 +58,39 @@ namespace MpmOtm
                               const std::string &model_documentation);
 
     /**
-     * Read the common entries and check them.
+     * Read the common entries from the current subsection of @p prm (the
+     * material's, called @p subsection_path in messages) and check them.
+     * Models with entries of their own override this, call it first, and
+     * read their subsection.
      */
-    void
+    virtual void
     parse_parameters(ParameterHandler &prm);
 
     /**
-     * Replace @p stress (on entry the stress of the previous step) by the
-     * Cauchy stress for the deformation gradient @p F, reached with the
-     * velocity gradient @p velocity_gradient over the step @p dt.
+     * Set the name of the subsection this material is read from (e.g.
+     * "Material" or "Material sand"), which messages name.
+     */
+    void
+    set_subsection_path(const std::string &path);
+
+    /**
+     * The names of the internal variables the model keeps per point (one
+     * number each, 0 at the start), e.g. the equivalent plastic strain. The
+     * point storage reserves a slot for each.
+     */
+    virtual std::vector<std::string>
+    internal_variables() const;
+
+    /**
+     * Replace @p state (on entry the state of the previous step) by the state
+     * for the deformation gradient @p F, reached with the velocity gradient
+     * @p velocity_gradient over the step @p dt.
      */
     virtual void
-    update_stress(const Tensor<2, dim>    &F,
-                  const Tensor<2, dim>    &velocity_gradient,
-                  const double             dt,
-                  SymmetricTensor<2, dim> &stress) const = 0;
+    update_stress(const Tensor<2, dim> &F,
+                  const Tensor<2, dim> &velocity_gradient,
+                  const double          dt,
+                  StressState<dim>     &state) const = 0;
 
     /**
      * Stored elastic energy of a material point with initial volume
@@ -61,6 +104,31 @@ namespace MpmOtm
                   const double                   volume) const = 0;
 
     /**
+     * The equivalent plastic strain of a point with these internal
+     * variables (0 for elastic models).
+     */
+    virtual double
+    equivalent_plastic_strain(
+      const ArrayView<const double> &internal_variables) const;
+
+    /**
+     * The friction angle phi (radians) of a frictional model, 0 otherwise;
+     * a geostatic initial stress uses K0 = 1 - sin(phi) by default for
+     * phi > 0 and the elastic nu / (1 - nu) otherwise.
+     */
+    virtual double
+    friction_angle() const;
+
+    /**
+     * The out-of-plane stress of an elastic point whose in-plane stress is
+     * @p stress and whose out-of-plane strain is zero: nu (sigma_xx +
+     * sigma_yy) in 2D (plane strain), nu / (1 - nu) sigma_xx in 1D
+     * (uniaxial strain); 0 in 3D.
+     */
+    double
+    elastic_out_of_plane_stress(const SymmetricTensor<2, dim> &stress) const;
+
+    /**
      * Initial mass density.
      */
     double
@@ -71,6 +139,12 @@ namespace MpmOtm
      */
     double
     youngs_modulus() const;
+
+    /**
+     * Poisson's ratio.
+     */
+    double
+    poissons_ratio() const;
 
     /**
      * Lame's first parameter.
@@ -92,11 +166,18 @@ namespace MpmOtm
     wave_speed() const;
 
   protected:
-    double young       = 0;
-    double poisson     = 0;
-    double rho         = 0;
-    double lambda_lame = 0;
-    double mu_lame     = 0;
+    /**
+     * "<subsection>/<entry>", for messages about the entry @p entry.
+     */
+    std::string
+    entry_name(const std::string &entry) const;
+
+    std::string subsection_path = "Material";
+    double      young           = 0;
+    double      poisson         = 0;
+    double      rho             = 0;
+    double      lambda_lame     = 0;
+    double      mu_lame         = 0;
   };
 } // namespace MpmOtm
 

@@ -17,10 +17,10 @@ namespace MpmOtm
     declare_parameters(ParameterHandler &prm);
 
     void
-    update_stress(const Tensor<2, dim>    &F,
-                  const Tensor<2, dim>    &velocity_gradient,
-                  const double             dt,
-                  SymmetricTensor<2, dim> &stress) const override;
+    update_stress(const Tensor<2, dim> &F,
+                  const Tensor<2, dim> &velocity_gradient,
+                  const double          dt,
+                  StressState<dim>     &state) const override;
 
     double
     strain_energy(const Tensor<2, dim>          &F,

@@ -1,19 +1,25 @@
 #ifndef mpm_otm_problems_custom_problem_h
 #define mpm_otm_problems_custom_problem_h
 
-#include <deal.II/base/function_parser.h>
-
+#include <mpm_otm/base/parsed_expression.h>
+#include <mpm_otm/problems/body.h>
 #include <mpm_otm/problems/problem.h>
 
 #include <memory>
+#include <vector>
 
 namespace MpmOtm
 {
   /**
-   * A problem written in the parameter file: initial velocity, body force,
-   * traction and, optionally, the exact displacement as muparser expressions
-   * of the initial position (x, y, z) and time t, and the fixed velocity
-   * components per boundary id.
+   * A problem written in the parameter file. The material is either the
+   * bodies listed in the entry "Bodies" (each of any shape, with its own
+   * material, initial velocity and initial stress, given or geostatic), or
+   * one box of the default material given by "Material lower corner" and
+   * "Material upper corner" with the "Initial velocity" of subsection
+   * "Custom problem". Body force, traction and, optionally, the exact
+   * displacement are muparser expressions of the initial position (x, y, z)
+   * and time t; the fixed velocity components per boundary id are listed in
+   * "Fixed components" (further boundary conditions: BoundaryConditions).
    */
   template <int dim>
   class CustomProblem : public Problem<dim>
@@ -25,12 +31,34 @@ namespace MpmOtm
     void
     parse_parameters(ParameterHandler &prm) override;
 
+    /**
+     * True: the conditions are expressions and boundary ids, which any
+     * grid, also a Mesh file, can take.
+     */
+    bool
+    runs_on_any_grid() const override;
+
     void
     initialize(const Material<dim>    &material,
                const BoundingBox<dim> &grid_box) override;
 
     Tensor<1, dim>
     initial_velocity(const Point<dim> &X) const override;
+
+    unsigned int
+    n_bodies() const override;
+
+    std::string
+    body_name(const unsigned int body) const override;
+
+    unsigned int
+    body_containing(const Point<dim> &X) const override;
+
+    unsigned int
+    material_id(const unsigned int body) const override;
+
+    std::pair<SymmetricTensor<2, dim>, double>
+    initial_stress(const Point<dim> &X, const unsigned int body) const override;
 
     bool
     has_body_force() const override;
@@ -61,14 +89,23 @@ namespace MpmOtm
     exact_displacement(const Point<dim> &X, const double time) const override;
 
   private:
-    std::unique_ptr<FunctionParser<dim>> velocity;
-    std::unique_ptr<FunctionParser<dim>> force;
-    std::unique_ptr<FunctionParser<dim>> traction_function;
-    std::unique_ptr<FunctionParser<dim>> displacement;
-    std::vector<FixedComponents<dim>>    fixed;
-    std::vector<types::boundary_id>      traction_ids;
-    std::string                          region_lower;
-    std::string                          region_upper;
+    /**
+     * The weight per unit area of the material above @p X: the integral of
+     * the density over the vertical line from X to the top of the grid,
+     * times the vertical component of gravity (negative: compression).
+     */
+    double
+    vertical_stress(const Point<dim> &X) const;
+
+    std::vector<Body<dim>>                 bodies;
+    std::unique_ptr<ParsedExpression<dim>> velocity;
+    std::unique_ptr<ParsedExpression<dim>> force;
+    std::unique_ptr<ParsedExpression<dim>> traction_function;
+    std::unique_ptr<ParsedExpression<dim>> displacement;
+    std::vector<FixedComponents<dim>>      fixed;
+    std::vector<types::boundary_id>        traction_ids;
+    std::string                            region_lower;
+    std::string                            region_upper;
   };
 } // namespace MpmOtm
 

@@ -16,6 +16,8 @@ namespace MpmOtm
 
   template <int dim>
   class Material;
+  template <int dim>
+  class MaterialLibrary;
 
   /**
    * A boundary on which some velocity components are fixed to zero
@@ -53,12 +55,15 @@ namespace MpmOtm
   };
 
   /**
-   * One benchmark or user problem: where the material is, its initial
-   * velocity, body force, Dirichlet and traction conditions and, where
-   * known, the exact displacement and stress. Quantities are functions of the
-   * initial (material) position X of a point and of time. Boundary ids are
-   * those of BackgroundGrid (2 d: lower side, 2 d + 1: upper side in
-   * direction d).
+   * One benchmark or user problem: where the material is (its bodies, each
+   * with a material, an initial velocity and an initial stress), its loads
+   * (gravity, read here for every problem from subsection "Gravity", body
+   * force, tractions), its Dirichlet conditions and, where known, the exact
+   * displacement and stress. Quantities are functions of the initial
+   * (material) position X of a point and of time. Boundary ids are those of
+   * BackgroundGrid (2 d: lower side, 2 d + 1: upper side in direction d).
+   * The built-in benchmarks have one body, their material region, of the
+   * default material.
    */
   template <int dim>
   class Problem
@@ -67,13 +72,82 @@ namespace MpmOtm
     virtual ~Problem() = default;
 
     /**
+     * Declare subsection "Gravity", which every problem has.
+     */
+    static void
+    declare_common_parameters(ParameterHandler &prm);
+
+    /**
+     * Read subsection "Gravity", remember @p materials and read the
+     * problem's own entries (parse_parameters()).
+     */
+    void
+    parse(ParameterHandler &prm, const MaterialLibrary<dim> &materials);
+
+    /**
      * Read the problem's own subsection.
      */
     virtual void
     parse_parameters(ParameterHandler &prm) = 0;
 
     /**
-     * Called once the material and the background box are known.
+     * The gravitational acceleration at @p time (the entry Gravity/Vector,
+     * ramped linearly from 0 over Gravity/Ramp time).
+     */
+    Tensor<1, dim>
+    gravity(const double time) const;
+
+    /**
+     * Whether gravity is switched on.
+     */
+    bool
+    has_gravity() const;
+
+    /**
+     * Number of bodies (1 unless a problem says otherwise).
+     */
+    virtual unsigned int
+    n_bodies() const;
+
+    /**
+     * Name of body @p body (for messages and output).
+     */
+    virtual std::string
+    body_name(const unsigned int body) const;
+
+    /**
+     * The body that contains @p X, or numbers::invalid_unsigned_int if none;
+     * stops if two bodies overlap there. Default: body 0 is
+     * material_region().
+     */
+    virtual unsigned int
+    body_containing(const Point<dim> &X) const;
+
+    /**
+     * The number of the material of body @p body (default: 0, the default
+     * material).
+     */
+    virtual unsigned int
+    material_id(const unsigned int body) const;
+
+    /**
+     * Initial stress at @p X in body @p body: the in-plane components and
+     * the out-of-plane one (default: none).
+     */
+    virtual std::pair<SymmetricTensor<2, dim>, double>
+    initial_stress(const Point<dim> &X, const unsigned int body) const;
+
+    /**
+     * Whether the problem runs on any background grid, in particular on a
+     * Mesh file (default: false; the benchmarks are defined on box grids,
+     * whose sides have the boundary ids 0 to 2 dim - 1).
+     */
+    virtual bool
+    runs_on_any_grid() const;
+
+    /**
+     * Called once the material and the background box (for a Mesh file the
+     * bounding box of its vertices) are known.
      */
     virtual void
     initialize(const Material<dim> &material, const BoundingBox<dim> &grid_box);
@@ -147,13 +221,18 @@ namespace MpmOtm
 
     /**
      * Parse "id: components; id: components", e.g. "0: x, y; 2: y", into
-     * fixed components; @p entry names the parameter in error messages.
+     * fixed components; @p entry names the parameter in error messages. Any
+     * boundary id is accepted here; the Simulator checks that the grid has
+     * it.
      */
     static std::vector<FixedComponents<dim>>
     parse_fixed_components(const std::string &text, const std::string &entry);
 
   protected:
-    BoundingBox<dim> grid_box;
+    BoundingBox<dim>            grid_box;
+    const MaterialLibrary<dim> *materials = nullptr;
+    Tensor<1, dim>              gravity_vector;
+    double                      gravity_ramp_time = 0;
   };
 } // namespace MpmOtm
 

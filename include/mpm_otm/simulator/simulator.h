@@ -6,6 +6,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/dofs/dof_handler.h>
 
+#include <mpm_otm/base/subsection_names.h>
 #include <mpm_otm/io/statistics.h>
 
 #include <functional>
@@ -32,11 +33,15 @@ namespace MpmOtm
   template <int dim>
   class GridMotion;
   template <int dim>
-  class Material;
+  class MaterialLibrary;
   template <int dim>
   class Problem;
   template <int dim>
   class OutputWriter;
+  template <int dim>
+  class BoundaryConditions;
+  template <int dim>
+  class LocalDamping;
 
   /**
    * Read the entry "Dimension" of a parameter file (1 when @p filename is
@@ -63,10 +68,12 @@ namespace MpmOtm
 
     /**
      * Declare every parameter of the application, including those of every
-     * registered plugin.
+     * registered plugin and the named subsections listed in @p names
+     * (SubsectionNames::read() finds them in a parameter file).
      */
     static void
-    declare_parameters(ParameterHandler &prm);
+    declare_parameters(ParameterHandler      &prm,
+                       const SubsectionNames &names = SubsectionNames());
 
     /**
      * Read and check all parameters; stops with a message naming the entry
@@ -116,6 +123,12 @@ namespace MpmOtm
     nodal_system() const;
 
     /**
+     * The materials.
+     */
+    const MaterialLibrary<dim> &
+    material_library() const;
+
+    /**
      * The problem.
      */
     const Problem<dim> &
@@ -137,16 +150,18 @@ namespace MpmOtm
     /// Functions with a smaller diagonal mass are deactivated (thesis 5.2).
     double deactivation_threshold = 0;
 
-    std::unique_ptr<BackgroundGrid<dim>> grid;
-    std::unique_ptr<MaterialPoints<dim>> points;
-    std::unique_ptr<ShapeFunctions<dim>> shape_functions;
-    std::unique_ptr<NodalSystem<dim>>    system;
-    std::unique_ptr<MassMatrix<dim>>     mass_matrix;
-    std::unique_ptr<NodalUpdate<dim>>    nodal_update;
-    std::unique_ptr<GridMotion<dim>>     grid_motion;
-    std::unique_ptr<Material<dim>>       material;
-    std::unique_ptr<Problem<dim>>        problem_description;
-    std::unique_ptr<OutputWriter<dim>>   output;
+    std::unique_ptr<BackgroundGrid<dim>>     grid;
+    std::unique_ptr<MaterialPoints<dim>>     points;
+    std::unique_ptr<ShapeFunctions<dim>>     shape_functions;
+    std::unique_ptr<NodalSystem<dim>>        system;
+    std::unique_ptr<MassMatrix<dim>>         mass_matrix;
+    std::unique_ptr<NodalUpdate<dim>>        nodal_update;
+    std::unique_ptr<GridMotion<dim>>         grid_motion;
+    std::unique_ptr<MaterialLibrary<dim>>    materials;
+    std::unique_ptr<Problem<dim>>            problem_description;
+    std::unique_ptr<OutputWriter<dim>>       output;
+    std::unique_ptr<BoundaryConditions<dim>> boundary_conditions;
+    std::unique_ptr<LocalDamping<dim>>       damping;
   };
 } // namespace MpmOtm
 

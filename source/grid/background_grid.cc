@@ -7,8 +7,10 @@
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_tools.h>
 
-#include <mpm_otm/grid_system/background_grid.h>
+#include <mpm_otm/grid/background_grid.h>
+#include <mpm_otm/grid/gmsh_file.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -41,31 +43,56 @@ namespace MpmOtm
 
 
   template <int dim>
+  BackgroundGrid<dim>::BackgroundGrid() = default;
+
+
+
+  template <int dim>
+  BackgroundGrid<dim>::~BackgroundGrid() = default;
+
+
+
+  template <int dim>
   void
   BackgroundGrid<dim>::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Mesh");
     {
+      prm.declare_entry(
+        "Mesh file",
+        "",
+        Patterns::FileName(Patterns::FileName::input),
+        "A Gmsh .msh file (ASCII, format 2.2 or 4.1; a relative path starts "
+        "in the working directory) whose cells, all quadrilaterals or all "
+        "triangles in 2D and all hexahedra or all tetrahedra in 3D, form the "
+        "grid, with the physical tags of the boundary lines (2D) or "
+        "surfaces (3D) as boundary ids (0 where a boundary face has none); "
+        "empty: the box grid of Lower corner, Upper corner and "
+        "Subdivisions.");
       prm.declare_entry("Cell type",
                         "hypercube",
                         Patterns::Selection("hypercube|simplex"),
                         "hypercube: one quadrilateral/hexahedron per block; "
                         "simplex: four triangles around the block centre in "
-                        "2D (thesis Fig. 4.2), tetrahedra in 3D.");
+                        "2D (thesis Fig. 4.2), tetrahedra in 3D (ignored "
+                        "with a Mesh file, whose cells decide).");
       prm.declare_entry("Lower corner",
                         "0",
                         Patterns::List(Patterns::Double()),
                         "Lower corner of the background box, one value per "
-                        "direction (one value: the same in every direction).");
+                        "direction (one value: the same in every direction; "
+                        "ignored with a Mesh file).");
       prm.declare_entry("Upper corner",
                         "1",
                         Patterns::List(Patterns::Double()),
-                        "Upper corner of the background box.");
+                        "Upper corner of the background box (ignored with a "
+                        "Mesh file).");
       prm.declare_entry("Subdivisions",
                         "31",
                         Patterns::List(Patterns::Integer(1)),
                         "Number of blocks per direction (nodes per direction "
-                        "minus one for linear shape functions).");
+                        "minus one for linear shape functions; ignored with "
+                        "a Mesh file).");
     }
     prm.leave_subsection();
   }
@@ -77,6 +104,16 @@ namespace MpmOtm
   BackgroundGrid<dim>::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Mesh");
+    file = prm.get("Mesh file");
+    if (!file.empty())
+      {
+        prm.leave_subsection();
+        gmsh    = std::make_unique<GmshFile>(file, dim);
+        simplex = gmsh->is_simplex();
+        blocks.clear();
+        return;
+      }
+    gmsh.reset();
     simplex = (prm.get("Cell type") == "simplex");
     const auto lower =
       per_direction(Utilities::string_to_double(
@@ -119,6 +156,11 @@ namespace MpmOtm
   BackgroundGrid<dim>::create(const MPI_Comm communicator,
                               const bool     vertices_move)
   {
+    if (gmsh)
+      {
+        create_from_file(communicator);
+        return;
+      }
     const bool distributed = (dim > 1 && !simplex);
     if (distributed)
       tria = std::make_unique<parallel::distributed::Triangulation<dim>>(
@@ -157,6 +199,59 @@ namespace MpmOtm
         map = std::make_unique<MappingFE<dim>>(FE_SimplexP<dim>(1));
       }
     set_boundary_ids();
+  }
+
+
+
+  template <int dim>
+  void
+  BackgroundGrid<dim>::create_from_file(const MPI_Comm communicator)
+  {
+    if constexpr (dim > 1)
+      {
+        if (!simplex)
+          tria = std::make_unique<parallel::distributed::Triangulation<dim>>(
+            communicator);
+        else
+          {
+            AssertThrow(Utilities::MPI::n_mpi_processes(communicator) == 1,
+                        ExcMessage(
+                          "Mesh/Mesh file: <" + file + "> holds " +
+                          (dim == 2 ? "triangles" : "tetrahedra") +
+                          ", and simplex grids run on one MPI rank; run "
+                          "without mpirun, or mesh with " +
+                          (dim == 2 ? "quadrilaterals" : "hexahedra") +
+                          " (which run in parallel)."));
+            tria = std::make_unique<Triangulation<dim>>();
+          }
+        gmsh->read(*tria);
+        if (simplex)
+          map = std::make_unique<MappingFE<dim>>(FE_SimplexP<dim>(1));
+        else
+          map = std::make_unique<MappingQ<dim>>(1);
+
+        // Every rank has the whole coarse mesh.
+        Point<dim> lower, upper;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            lower[d] = std::numeric_limits<double>::max();
+            upper[d] = -std::numeric_limits<double>::max();
+          }
+        const auto &used = tria->get_used_vertices();
+        for (unsigned int v = 0; v < tria->n_vertices(); ++v)
+          if (used[v])
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                lower[d] = std::min(lower[d], tria->get_vertices()[v][d]);
+                upper[d] = std::max(upper[d], tria->get_vertices()[v][d]);
+              }
+        bounding_box = BoundingBox<dim>(std::make_pair(lower, upper));
+      }
+    else
+      {
+        (void)communicator;
+        AssertThrow(false, ExcInternalError());
+      }
   }
 
 
@@ -267,6 +362,24 @@ namespace MpmOtm
 
 
   template <int dim>
+  bool
+  BackgroundGrid<dim>::is_box() const
+  {
+    return file.empty();
+  }
+
+
+
+  template <int dim>
+  const std::string &
+  BackgroundGrid<dim>::mesh_file() const
+  {
+    return file;
+  }
+
+
+
+  template <int dim>
   const BoundingBox<dim> &
   BackgroundGrid<dim>::box() const
   {
@@ -279,6 +392,7 @@ namespace MpmOtm
   const std::vector<unsigned int> &
   BackgroundGrid<dim>::subdivisions() const
   {
+    Assert(is_box(), ExcMessage("Only box grids have blocks."));
     return blocks;
   }
 
@@ -293,6 +407,25 @@ namespace MpmOtm
       if (cell->is_locally_owned())
         h = std::min(h, cell->minimum_vertex_distance());
     return Utilities::MPI::min(h, tria->get_communicator());
+  }
+
+
+
+  template <int dim>
+  std::vector<types::boundary_id>
+  BackgroundGrid<dim>::boundary_ids() const
+  {
+    std::vector<types::boundary_id> ids;
+    for (const auto &cell : tria->active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const unsigned int f : cell->face_indices())
+          if (cell->face(f)->at_boundary())
+            ids.push_back(cell->face(f)->boundary_id());
+    std::sort(ids.begin(), ids.end());
+    ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+    ids = Utilities::MPI::compute_set_union(ids, tria->get_communicator());
+    std::sort(ids.begin(), ids.end());
+    return ids;
   }
 
 

@@ -1,0 +1,192 @@
+#!/usr/bin/env bash
+# Run the benchmarks G1-G4 of doc/benchmarks.md (BENCHMARKS.md "Beyond the
+# seeds") with the parameter files in prm/, collect the numbers in
+# doc/data/G*.dat and draw doc/figures/G*.png with gnuplot (Debian package
+# gnuplot-nox; doc/scripts/user_problems.gp).
+#
+# Usage: doc/scripts/reproduce_user_problems.sh [path to mpm-otm] [G1 G2 G3 G4]
+# (default: build-release/mpm-otm, made by ./scripts/setup.sh run; all four)
+set -euo pipefail
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
+exe=${1:-$root/build-release/mpm-otm}
+exe=$(cd "$(dirname "$exe")" && pwd)/$(basename "$exe")
+shift || true
+benchmarks=${*:-G1 G2 G3 G4}
+data=$root/doc/data
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cd "$work"
+
+# Run prm/$1 with extra lines $2 appended; output in ./run.
+run() {
+  cp "$root/prm/$1" run.prm
+  printf '%s\nsubsection Output\n set Directory = run\n set Write VTU = false\nend\n' "$2" >> run.prm
+  rm -rf run
+  "$exe" run.prm > run.log
+}
+
+# Mean uy of the points of the last point column of the cantilever (X > $1)
+# for every particles-*.csv of ./run: "time uy", time = step * $2.
+tip_history() {
+  for file in run/particles-*.csv; do
+    step=$(basename "$file" .csv | sed 's/particles-0*//')
+    awk -F, -v t="$(awk "BEGIN{print ${step:-0} * $2}")" -v x="$1" \
+      'NR > 1 && $2 > x { s += $7; n++ } END { printf "%.6g %.8e\n", t, s / n }' "$file"
+  done | sort -g
+}
+
+for benchmark in $benchmarks; do
+  case $benchmark in
+    G1)
+      echo "G1: cantilever under its own weight, static deflection and period"
+      {
+        echo "# family cells_across_h static_tip_deflection period (prm/G1-cantilever-*.prm)"
+        for family in linear B-spline; do
+          for cells in 4 8; do
+            nx=$((12 * cells)); ny=$((4 * cells))
+            dt=$(awk "BEGIN{print 2.5e-5 * 8 / $cells}")
+            grid="set Shape functions = $family
+set B-spline degree = 2
+subsection Mesh
+ set Subdivisions = $nx, $ny
+end
+subsection Time
+ set Time step = $dt
+end"
+            run G1-cantilever-static.prm "$grid
+subsection Output
+ set Interval = $(awk "BEGIN{print int(0.05 / $dt + 0.5)}")
+end"
+            static=$(tip_history 0.99 "$dt" | tail -1 | cut -d' ' -f2)
+            run G1-cantilever-vibration.prm "$grid
+subsection Output
+ set Interval = $(awk "BEGIN{print int(1e-3 / $dt + 0.5)}")
+end"
+            tip_history 0.99 "$dt" > "$data/G1-tip-$family-$cells.dat"
+            # The period: mean time between the up-crossings of the mean.
+            period=$(awk '{ t[NR] = $1; u[NR] = $2; s += $2 } END {
+                       m = s / NR; n = 0
+                       for (i = 2; i <= NR; i++)
+                         if (u[i - 1] < m && u[i] >= m) {
+                           c = t[i - 1] + (m - u[i - 1]) / (u[i] - u[i - 1]) * (t[i] - t[i - 1])
+                           if (n > 0) { sum += c - last; k++ }
+                           last = c; n++ }
+                       printf "%.6g", sum / k }' "$data/G1-tip-$family-$cells.dat")
+            echo "$family $cells $static $period"
+          done
+        done
+      } | tee "$data/G1-cantilever.dat"
+      ;;
+    G2)
+      echo "G2: block sliding on a rough plane, centre of mass at t = 0.5"
+      {
+        echo "# theta_deg mu x_centre(0.5) x_rigid(0.5) normal_reaction m_g_cos_theta (prm/G2-friction-block.prm)"
+        for case in "30 0.3" "30 0" "10 0.3"; do
+          set -- $case
+          gx=$(awk "BEGIN{print 9.81 * sin($1 * atan2(0, -1) / 180)}")
+          gy=$(awk "BEGIN{print -9.81 * cos($1 * atan2(0, -1) / 180)}")
+          run G2-friction-block.prm "subsection Gravity
+ set Vector = $gx, $gy
+end
+subsection Boundary floor
+ set Friction coefficient = $2
+end
+subsection Output
+ set Interval = 50
+end"
+          for file in run/particles-*.csv; do
+            step=$(basename "$file" .csv | sed 's/particles-0*//')
+            awk -F, -v t="$(awk "BEGIN{print ${step:-0} * 2e-4}")" \
+              'NR > 1 { s += $14 * $6; m += $14 } END { printf "%.4g %.8e\n", t, s / m }' "$file"
+          done | sort -g > "$data/G2-centre-$1-$2.dat"
+          x=$(tail -1 "$data/G2-centre-$1-$2.dat" | cut -d' ' -f2)
+          exact=$(awk "BEGIN{a = $gx + $2 * $gy; if (a < 0) a = 0; print a * 0.125}")
+          normal=$(awk -F, 'NR > 2 { s += $8; n++ } END { print s / n }' run/statistics.csv)
+          echo "$1 $2 $x $exact $normal $(awk "BEGIN{print -20 * $gy}")"
+        done
+      } | tee "$data/G2-friction-block.dat"
+      ;;
+    G3)
+      echo "G3: Prandtl footing, load against settlement on three grids"
+      for n in 20 40 80; do
+        h=$(awk "BEGIN{print 2.5 / $n}")
+        dt=$(awk "BEGIN{print 4e-4 * 40 / $n}")
+        run G3-prandtl-footing.prm "subsection Mesh
+ set Subdivisions = $n, $((6 * n / 5))
+end
+subsection Time
+ set Time step = $dt
+end
+subsection Boundary footing
+ set Box lower corner = 0, $(awk "BEGIN{print 2.5 - 0.5 * $h + 1e-6}")
+ set Box upper corner = 0.5001, $(awk "BEGIN{print 2.5 + 0.5 * $h - 1e-6}")
+end
+subsection Output
+ set Interval = $(awk "BEGIN{print int(0.02 / $dt + 0.5)}")
+ set Write particle CSV = true
+end"
+        {
+          echo "# settlement load_per_unit_length (half model, N/m; $n x $((6 * n / 5)) cells)"
+          awk -F, 'NR > 1 { print -$9, -$7 }' run/statistics.csv
+        } > "$data/G3-load-$n.dat"
+        plateau=$(awk 'NR > 1 && $1 >= 0.03 { s += $2; n++ } END { print s / n }' "$data/G3-load-$n.dat")
+        echo "$n cells: mean load at settlements 0.03-0.1: $plateau N/m (Prandtl 25708)"
+        if [ "$n" = 80 ]; then
+          last=$(ls run/particles-*.csv | tail -1)
+          awk -F, 'NR > 1 { printf "%.4g %.4g %.3g\n", $4, $5, $17 }' "$last" > "$data/G3-plastic-strain.dat"
+        fi
+      done | tee "$data/G3-limit-load.txt"
+      ;;
+    G4)
+      echo "G4: granular column collapse, a = 0.5, 1, 2 (20 cells across L0)"
+      {
+        echo "# a H0 front toe H_inf (L_front-L0)/L0 (L_toe-L0)/L0 Lube Balmforth-Kerswell (prm/G4-column-collapse.prm)"
+        for a in 0.5 1 2; do
+          H0=$(awk "BEGIN{print 0.2 * $a}")
+          run G4-column-collapse.prm "subsection Body column
+ set Upper corner = 0.2, $H0
+end
+subsection Output
+ set Interval = 500
+end"
+          last=$(ls run/particles-*.csv | tail -1)
+          awk -F, 'NR > 1 { printf "%.4g %.4g %.3g\n", $4, $5, $17 }' "$last" > "$data/G4-deposit-$a.dat"
+          # The front: the furthest point; the toe: the furthest x where the
+          # deposit is at least one cell (0.01) thick, in columns of 0.01.
+          awk -v a="$a" -v H0="$H0" '{ b = int($1 / 0.01); if ($2 > top[b]) top[b] = $2; if ($1 > front) front = $1; if ($2 > h) h = $2 }
+            END { for (b in top) if (top[b] >= 0.01 && (b + 1) * 0.01 > toe) toe = (b + 1) * 0.01
+                  lube = (a < 2.3) ? 1.2 * a : 1.9 * a ^ (2 / 3)
+                  printf "%s %s %.4f %.4f %.4f %.3f %.3f %.3f %.3f\n", a, H0, front, toe, h + 0.0025, (front - 0.2) / 0.2, (toe - 0.2) / 0.2, lube, a ^ 0.9 }' "$data/G4-deposit-$a.dat"
+        done
+      } | tee "$data/G4-run-out.dat"
+      {
+        echo "# cells_across_L0 failure_surface_angle_deg (a = 1, t = 0.05 s; Rankine 60)"
+        for cells in 20 40 80; do
+          dt=$(awk "BEGIN{print 1e-4 * 20 / $cells}")
+          run G4-column-collapse.prm "subsection Mesh
+ set Upper corner = 0.3, 0.24
+ set Subdivisions = $((3 * cells / 2)), $((6 * cells / 5))
+end
+subsection Time
+ set End time = 0.05
+ set Time step = $dt
+end
+subsection Output
+ set Interval = $(awk "BEGIN{print int(0.05 / $dt + 0.5)}")
+end"
+          last=$(ls run/particles-*.csv | tail -1)
+          echo "$cells $(awk -v L0=0.2 -v H0=0.2 -v cell="$(awk "BEGIN{print 0.2 / $cells}")" -f "$root/doc/scripts/failure_surface.awk" "$last" | cut -d' ' -f2)"
+          if [ "$cells" = 40 ]; then
+            awk -F, 'NR > 1 { printf "%.4g %.4g %.3g\n", $4, $5, sqrt($8 * $8 + $9 * $9) }' "$last" > "$data/G4-failure-speed.dat"
+          fi
+        done
+      } | tee "$data/G4-failure-angle.dat"
+      ;;
+  esac
+done
+
+if command -v gnuplot > /dev/null; then
+  (cd "$root/doc" && gnuplot scripts/user_problems.gp)
+else
+  echo "gnuplot not found: figures not drawn (apt-get install gnuplot-nox)"
+fi

@@ -1,0 +1,94 @@
+# Figures of the G1-G4 sections of doc/benchmarks.md from doc/data/G*.dat
+# (run from doc/; doc/scripts/reproduce_user_problems.sh writes the data).
+set terminal pngcairo size 800,560 font ",11"
+set grid
+set key top right
+
+set output "figures/G1-cantilever.png"
+set title "G1: tip deflection of the cantilever, gravity switched on at t = 0, undamped"
+set xlabel "t (s)"
+set ylabel "tip deflection -u_y (m)"
+set key bottom right
+plot "data/G1-tip-linear-8.dat" using 1:(-$2) with lines lw 2 title "mpm-otm, linear MPM, 8 cells across h", \
+     "data/G1-tip-B-spline-8.dat" using 1:(-$2) with lines lw 2 dt 2 title "mpm-otm, quadratic B-splines, 8 cells", \
+     1.0080e-2 with lines lc rgb "black" dt 3 title "static deflection, Timoshenko 1.008e-2", \
+     1.0080e-2 * (1 - cos(2 * pi * x / 0.1624)) with lines lc rgb "gray" title "Timoshenko: 1.008e-2 (1 - cos(2 pi t / 0.1624))"
+
+set output "figures/G2-friction-block.png"
+set title "G2: block on a rough plane, centre of mass"
+set xlabel "t (s)"
+set ylabel "x_{centre}(t) - x_{centre}(0) (m)"
+set key top left
+g = 9.81
+a(theta, mu) = (g * (sin(theta * pi / 180) - mu * cos(theta * pi / 180)) > 0) ? g * (sin(theta * pi / 180) - mu * cos(theta * pi / 180)) : 0
+plot "data/G2-centre-30-0.3.dat" using 1:2 with points pt 7 title "mpm-otm, theta = 30, mu = 0.3", \
+     a(30, 0.3) * x**2 / 2 with lines lc rgb "black" title "rigid block, a = 2.356", \
+     "data/G2-centre-30-0.dat" using 1:2 with points pt 5 title "mpm-otm, theta = 30, mu = 0", \
+     a(30, 0) * x**2 / 2 with lines lc rgb "black" dt 2 title "rigid block, a = g/2", \
+     "data/G2-centre-10-0.3.dat" using 1:2 with points pt 9 title "mpm-otm, theta = 10, mu = 0.3 (at rest)"
+
+set output "figures/G3-load-displacement.png"
+set title "G3: smooth strip footing on a Tresca soil (half model)"
+set xlabel "settlement (m)"
+set ylabel "load per unit length (kN/m)"
+set key bottom right
+plot "data/G3-load-20.dat" using 1:($2 / 1e3) with lines lw 2 title "mpm-otm, 20 x 24 cells", \
+     "data/G3-load-40.dat" using 1:($2 / 1e3) with lines lw 2 title "mpm-otm, 40 x 48 cells", \
+     "data/G3-load-80.dat" using 1:($2 / 1e3) with lines lw 2 title "mpm-otm, 80 x 96 cells", \
+     25.708 with lines lc rgb "black" dt 2 title "Prandtl (2 + pi) c B / 2 = 25.71 kN/m"
+
+set output "figures/G3-plastic-strain.png"
+set title "G3: equivalent plastic strain at a settlement of 0.1 (80 x 96 cells)"
+set xlabel "x (m)"
+set ylabel "y (m)"
+set size ratio -1
+set xrange [0:2.5]
+set yrange [0.8:2.6]
+set cblabel "equivalent plastic strain"
+set cbrange [0:0.2]
+set palette rgbformulae 33,13,10
+unset key
+plot "data/G3-plastic-strain.dat" using 1:2:3 with points pt 5 ps 0.25 palette
+unset size
+set autoscale
+unset cbrange
+
+set output "figures/G4-deposits.png"
+set terminal pngcairo size 1000,420 font ",11"
+set title "G4: final deposits of the columns (L_0 = 0.2, a = H_0 / L_0), colour: equivalent plastic strain"
+set xlabel "x (m)"
+set ylabel "y (m)"
+set size ratio -1
+set xrange [0:1.0]
+set yrange [0:0.42]
+set cbrange [0:2]
+set key top right
+plot "data/G4-deposit-2.dat" using 1:2:3 with points pt 5 ps 0.2 palette title "a = 2", \
+     "data/G4-deposit-1.dat" using 1:($2):3 with points pt 5 ps 0.2 palette notitle, \
+     "data/G4-deposit-0.5.dat" using 1:2:3 with points pt 5 ps 0.2 palette notitle, \
+     "-" using 1:2 with lines lc rgb "black" dt 2 title "initial columns"
+0 0.4
+0.2 0.4
+0.2 0
+
+0 0.2
+0.2 0.2
+
+0 0.1
+0.2 0.1
+e
+unset size
+set autoscale
+unset cbrange
+
+set output "figures/G4-failure-surface.png"
+set terminal pngcairo size 700,560 font ",11"
+set title "G4: speed at t = 0.05 s (a = 1, 40 cells across L_0) and the Rankine surface"
+set xlabel "x (m)"
+set ylabel "y (m)"
+set size ratio -1
+set xrange [0:0.3]
+set yrange [0:0.22]
+set cblabel "speed (m/s)"
+plot "data/G4-failure-speed.dat" using 1:2:3 with points pt 5 ps 0.3 palette notitle, \
+     [0.0845:0.2] (0.2 - x) * tan(60 * pi / 180) with lines lw 2 lc rgb "black" title "45 + phi/2 = 60 deg from the toe"

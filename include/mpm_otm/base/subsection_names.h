@@ -1,0 +1,52 @@
+#ifndef mpm_otm_base_subsection_names_h
+#define mpm_otm_base_subsection_names_h
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <string>
+#include <vector>
+
+namespace MpmOtm
+{
+  using namespace dealii;
+
+  /**
+   * The names a parameter file gives to its repeated subsections: the
+   * entries "Materials", "Bodies" and "Boundaries" list them, and each name
+   * then has a subsection "Material <name>", "Body <name>" or
+   * "Boundary <name>". ParameterHandler needs every subsection declared
+   * before it parses a file, so the names are read first, from the file's
+   * text, by read().
+   */
+  struct SubsectionNames
+  {
+    /// Names of the materials beside the default one ("Material").
+    std::vector<std::string> materials;
+    /// Names of the bodies.
+    std::vector<std::string> bodies;
+    /// Names of the boundary conditions.
+    std::vector<std::string> boundaries;
+
+    /**
+     * Declare the three entries that list the names.
+     */
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    /**
+     * The names listed in @p parameter_text (the text of a parameter file;
+     * everything else in it is skipped). Stops on a repeated name or one
+     * that contains a character other than letters, digits, '_' and '-'.
+     */
+    static SubsectionNames
+    read(const std::string &parameter_text);
+
+    /**
+     * The names listed in entry @p entry of @p prm.
+     */
+    static std::vector<std::string>
+    names_in(const ParameterHandler &prm, const std::string &entry);
+  };
+} // namespace MpmOtm
+
+#endif

@@ -1,0 +1,173 @@
+#ifndef mpm_otm_boundary_conditions_boundary_conditions_h
+#define mpm_otm_boundary_conditions_boundary_conditions_h
+
+#include <deal.II/base/bounding_box.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/tensor.h>
+
+#include <mpm_otm/base/parsed_expression.h>
+#include <mpm_otm/problems/problem.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace MpmOtm
+{
+  using namespace dealii;
+
+  template <int dim>
+  class BackgroundGrid;
+  template <int dim>
+  class NodalSystem;
+  template <int dim>
+  class ShapeFunctions;
+
+  /**
+   * The boundary conditions a user names in the entry "Boundaries", each
+   * read from subsection "Boundary <name>": where (the functions of some
+   * boundary ids of the grid, or those of the grid vertices inside a box)
+   * and what - fixed, slip (the normal velocity zero), Coulomb friction, or
+   * a prescribed velocity (functions of time) on some components. A box of
+   * prescribed velocity moves with the displacement it prescribes (a
+   * settling footing, a moving platen): every step it acts on the vertices
+   * inside the moved box. They act
+   * on the nodal (coefficient) velocities of a fixed grid with the standard
+   * nodal treatment (Bardenhagen, Brackbill & Sulsky 2000; Bardenhagen et
+   * al. 2001): after the accelerations are solved, each constrained node's
+   * velocity at the end of the step, v* = v + dt a with v = q / m, is
+   * corrected - for friction the velocity into the wall (along the
+   * boundary's outward normal n, v*.n > 0) is removed and the tangential
+   * velocity reduced by at most mu times the removed normal velocity - and
+   * the acceleration set to (v_new - v) / dt, so that the particles follow.
+   * The reaction of a condition is the sum of m_i a_i - f_i over its nodes:
+   * the force the boundary exerts on the material (lumped masses; with a
+   * consistent mass matrix an approximation). Fixed and slip conditions on
+   * sides normal to a coordinate direction also exclude the fixed
+   * components from the mass-matrix solves, as the problems' own
+   * FixedComponents do.
+   */
+  template <int dim>
+  class BoundaryConditions
+  {
+  public:
+    /**
+     * Declare a subsection "Boundary <name>" per name in @p names.
+     */
+    static void
+    declare_parameters(ParameterHandler               &prm,
+                       const std::vector<std::string> &names);
+
+    /**
+     * Read the conditions listed in the entry "Boundaries".
+     */
+    void
+    parse_parameters(ParameterHandler &prm);
+
+    /**
+     * Whether no condition is given.
+     */
+    bool
+    empty() const;
+
+    /**
+     * Find the functions of every condition and the outward normal of its
+     * boundary (which must be planar for slip and friction) on @p grid.
+     */
+    void
+    setup(const ShapeFunctions<dim> &shape_functions,
+          const BackgroundGrid<dim> &grid);
+
+    /**
+     * The conditions that fix whole components on sides normal to a
+     * coordinate direction, for the mass-matrix solves.
+     */
+    std::vector<FixedComponents<dim>>
+    fixed_components() const;
+
+    /**
+     * Correct the accelerations of the step from @p time to @p time + @p dt
+     * (locally owned entries of system.acceleration, solved from the
+     * assembled forces) and compute the reactions. Collective.
+     */
+    void
+    constrain_accelerations(NodalSystem<dim> &system,
+                            const double      time,
+                            const double      dt);
+
+    /**
+     * Impose the conditions on the nodal velocities of the end of the step
+     * (locally owned entries of system.velocity) at time @p time.
+     */
+    void
+    constrain_velocities(NodalSystem<dim> &system, const double time) const;
+
+    /**
+     * The names of the conditions.
+     */
+    std::vector<std::string>
+    names() const;
+
+    /**
+     * The reaction of each condition, averaged over the steps since the
+     * last call of this function, and the mean displacement of its nodes
+     * since the start (the integral of their mean velocity). Resets the
+     * averages.
+     */
+    std::vector<std::pair<Tensor<1, dim>, Tensor<1, dim>>>
+    reactions_and_displacements();
+
+  private:
+    enum class Type
+    {
+      fixed,
+      slip,
+      friction,
+      velocity
+    };
+
+    /**
+     * One condition.
+     */
+    struct Condition
+    {
+      std::string                            name;
+      Type                                   type = Type::fixed;
+      std::vector<types::boundary_id>        boundary_ids;
+      BoundingBox<dim>                       box;
+      bool                                   on_box               = false;
+      double                                 friction_coefficient = 0;
+      std::array<bool, dim>                  components{};
+      std::unique_ptr<ParsedExpression<dim>> velocity;
+      Tensor<1, dim>                         normal;
+      /// Local indices of the locally owned functions it acts on.
+      std::vector<unsigned int> functions;
+      Tensor<1, dim>            reaction_sum;
+      Tensor<1, dim>            displacement;
+      unsigned int              n_steps = 0;
+    };
+
+    /**
+     * The corrected velocity of a node with velocity @p v under
+     * @p condition at @p time.
+     */
+    Tensor<1, dim>
+    corrected_velocity(const Condition      &condition,
+                       const Tensor<1, dim> &v,
+                       const double          time) const;
+
+    /**
+     * List the locally owned functions of the vertices in the box of
+     * @p condition, moved by its displacement.
+     */
+    void
+    find_box_functions(Condition &condition) const;
+
+    std::vector<Condition>     conditions;
+    MPI_Comm                   communicator    = MPI_COMM_WORLD;
+    const ShapeFunctions<dim> *functions       = nullptr;
+    const BackgroundGrid<dim> *background_grid = nullptr;
+  };
+} // namespace MpmOtm
+
+#endif

@@ -1,0 +1,222 @@
+#ifndef mpm_otm_materials_mohr_coulomb_h
+#define mpm_otm_materials_mohr_coulomb_h
+
+#include <mpm_otm/materials/plastic_material.h>
+
+#include <array>
+
+namespace MpmOtm
+{
+  /**
+   * Mohr-Coulomb plasticity (perfectly plastic, non-associated) with a
+   * tension cut-off on the largest principal stress, for frictional-cohesive
+   * soils. With principal stresses sigma_1 >= sigma_2 >= sigma_3, positive
+   * in tension, the admissible stresses satisfy
+   *   f = (sigma_1 - sigma_3) + (sigma_1 + sigma_3) sin(phi) - 2 c cos(phi)
+   *     <= 0                                (the Mohr-Coulomb pyramid) and
+   *   sigma_1 - sigma_t <= 0                (the Rankine tension cut-off),
+   * with the plastic potential
+   * g = (sigma_1 - sigma_3) + (sigma_1 + sigma_3) sin(psi) on the
+   * Mohr-Coulomb planes (dilatancy angle psi <= phi) and associated flow on
+   * the cut-off planes sigma_i = sigma_t. The apex of the pyramid is the
+   * hydrostatic stress c cot(phi); phi = 0 gives Tresca's prism.
+   *
+   * The return mapping works on the principal stresses of the elastic trial
+   * stress, with the elastic law in principal space (Delta sigma_i =
+   * -sum_j (lambda + 2 G delta_ij) Delta eps^p_j), and rebuilds the stress
+   * with the trial's eigenvectors (de Souza Neto, Peric and Owen,
+   * Computational Methods for Plasticity, 2008, Sect. 8.2, Boxes 8.4-8.7):
+   * - main plane: one multiplier, d gamma = f^tr / a with
+   *   a = 4 G (1 + sin(phi) sin(psi) / 3) + 4 K sin(phi) sin(psi); valid if
+   *   the result keeps the order sigma_1 >= sigma_2 >= sigma_3;
+   * - right edge (sigma_2 = sigma_3, the planes (1, 3) and (1, 2)) and left
+   *   edge (sigma_1 = sigma_2, the planes (1, 3) and (2, 3)): two
+   *   multipliers from the 2 x 2 system [[a, b], [b, a]]; the edge tried
+   *   first is the one on the side of the trial given by the sign of
+   *   (1 - sin psi) sigma_1^tr - 2 sigma_2^tr + (1 + sin psi) sigma_3^tr
+   *   (>= 0: right), then the other;
+   * - apex: the hydrostatic stress c cot(phi), the plastic strain
+   *   being the elastic strain removed, as in de Souza Neto, when neither
+   *   the plane nor the edges give a valid state (needs phi > 0).
+   * A return is accepted when its multipliers are >= 0 and its result
+   * satisfies every plane (the six Mohr-Coulomb planes reduce to the three
+   * above and the order of the principal stresses, the cut-off to
+   * sigma_1 <= sigma_t), i.e. when it is a solution of the discrete
+   * Kuhn-Tucker conditions; for psi = phi this solution is unique (the
+   * closest point in the energy norm).
+   *
+   * The tension cut-off sigma_t (if set below the apex) adds the Rankine
+   * planes sigma_i = sigma_t with associated flow (Delta eps^p_i =
+   * d gamma_t >= 0). After the Mohr-Coulomb returns above (accepted only if
+   * their result has sigma_1 <= sigma_t), the returns tried are, with the
+   * same acceptance rule: to the cut-off plane sigma_1 = sigma_t; to its
+   * edge sigma_1 = sigma_2 = sigma_t; to the line where the main plane meets
+   * the cut-off (sigma_1 = sigma_t, sigma_3 = (sigma_t (1 + sin phi) -
+   * 2 c cos phi) / (1 - sin phi)); to the corner where the right edge meets
+   * the cut-off (sigma_2 = sigma_3 on that line); to the corner where the
+   * left edge meets it (sigma_1 = sigma_2 = sigma_t), with any three of the
+   * four planes through it; and to the cut-off apex sigma_1 = sigma_2 =
+   * sigma_3 = sigma_t. Every one solves a linear system of at most 3 x 3
+   * with the multipliers of its planes. Together they cover every face,
+   * edge and corner of the admissible set, so that (for psi = phi, and in
+   * every case the tests try for psi < phi) one of them is accepted; should
+   * none be (a non-associated trial far in tension), the stress goes to the
+   * cut-off apex.
+   *
+   * The equivalent plastic strain (internal variable 0) grows by
+   * sqrt(2/3) |Delta eps^p| with Delta eps^p = sum of d gamma_j times the
+   * flow vectors of the active planes (the elastic strain removed at the
+   * apex).
+   *
+   * Entries (subsection "Mohr-Coulomb"): Friction angle (degrees, in
+   * [0, 90)), Dilatancy angle (degrees, in [0, Friction angle]), Cohesion
+   * (Pa, >= 0), Tension cut-off (Pa in [0, c cot(phi)], or "apex", the
+   * default: no cut-off besides the apex for phi > 0, none for phi = 0).
+   */
+  template <int dim>
+  class MohrCoulomb : public PlasticMaterial<dim>
+  {
+  public:
+    /**
+     * Which return return_principal_stresses() took.
+     */
+    enum class Return
+    {
+      /// The trial stress was admissible and is kept.
+      elastic,
+      /// To the main plane (sigma_1, sigma_3).
+      plane,
+      /// To the edge sigma_2 = sigma_3.
+      right_edge,
+      /// To the edge sigma_1 = sigma_2.
+      left_edge,
+      /// To the apex c cot(phi).
+      apex,
+      /// To the cut-off plane sigma_1 = sigma_t.
+      cut_off,
+      /// To the edge sigma_1 = sigma_2 = sigma_t of the cut-off.
+      cut_off_edge,
+      /// To the line where the main plane meets the cut-off.
+      plane_and_cut_off,
+      /// To the corner where the right edge meets the cut-off.
+      right_edge_and_cut_off,
+      /// To the corner where the left edge meets the cut-off.
+      left_edge_and_cut_off,
+      /// To sigma_1 = sigma_2 = sigma_3 = sigma_t.
+      cut_off_apex
+    };
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    void
+    parse_parameters(ParameterHandler &prm) override;
+
+    void
+    return_map(SymmetricTensor<2, 3>   &stress,
+               const ArrayView<double> &internal_variables) const override;
+
+    /**
+     * The return mapping of return_map(): return @p stress, add the
+     * equivalent plastic strain increment to @p plastic_strain and say which
+     * return was taken.
+     */
+    Return
+    return_stress(SymmetricTensor<2, 3> &stress, double &plastic_strain) const;
+
+    /**
+     * The return in principal space: @p principal_stresses (sorted,
+     * sigma_1 >= sigma_2 >= sigma_3) are the trial's on entry and the
+     * returned ones on exit; the equivalent plastic strain increment is
+     * added to @p plastic_strain.
+     */
+    Return
+    return_principal_stresses(std::array<double, 3> &principal_stresses,
+                              double                &plastic_strain) const;
+
+    double
+    friction_angle() const override;
+
+    bool
+    can_separate() const override;
+
+    /**
+     * True for the hydrostatic stress of the apex (of the cut-off, if
+     * set), to 1e-12 E.
+     */
+    bool
+    is_separated(const SymmetricTensor<2, 3> &stress) const override;
+
+    /**
+     * The dilatancy angle psi (radians).
+     */
+    double
+    dilatancy_angle() const;
+
+    /**
+     * The cohesion c (Pa).
+     */
+    double
+    cohesion() const;
+
+    /**
+     * The largest admissible principal stress sigma_t (Pa): the apex
+     * c cot(phi) without a cut-off, infinite for phi = 0 without one.
+     */
+    double
+    tension_cut_off() const;
+
+    /**
+     * The Mohr-Coulomb yield function of the sorted principal stresses
+     * @p principal_stresses (Pa).
+     */
+    double
+    yield_function(const std::array<double, 3> &principal_stresses) const;
+
+  private:
+    /**
+     * One plane of the admissible set in the sextant sigma_1 >= sigma_2 >=
+     * sigma_3: yield function a . sigma - r, flow vector n.
+     */
+    struct Plane
+    {
+      std::array<double, 3> a;
+      std::array<double, 3> n;
+      double                r;
+    };
+
+    /**
+     * The planes: 0, 1, 2 the Mohr-Coulomb planes of the pairs (1, 3),
+     * (1, 2), (2, 3); 3, 4, 5 the cut-off planes sigma_1, sigma_2, sigma_3
+     * = sigma_t.
+     */
+    Plane
+    plane(const unsigned int i) const;
+
+    /**
+     * Try the return to the planes @p active (@p n_active of them, at most
+     * 3) from the trial @p trial; on success (multipliers >= 0, result
+     * admissible) set @p result and the plastic strain increment
+     * @p plastic_strain_increment (principal) and return true.
+     */
+    bool
+    try_return(const unsigned int          *active,
+               const unsigned int           n_active,
+               const std::array<double, 3> &trial,
+               const double                 tolerance,
+               std::array<double, 3>       &result,
+               std::array<double, 3>       &plastic_strain_increment) const;
+
+    double phi          = 0;
+    double psi          = 0;
+    double c            = 0;
+    double sin_phi      = 0;
+    double cos_phi      = 1;
+    double sin_psi      = 0;
+    double sigma_t      = 0;
+    bool   with_cut_off = false;
+    double apex_stress  = 0;
+  };
+} // namespace MpmOtm
+
+#endif

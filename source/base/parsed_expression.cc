@@ -1,0 +1,152 @@
+#include <deal.II/base/utilities.h>
+
+#include <mpm_otm/base/parsed_expression.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace MpmOtm
+{
+  namespace
+  {
+    std::string
+    variable_list(const unsigned int dim, const bool time_dependent)
+    {
+      std::string result;
+      for (unsigned int d = 0; d < dim; ++d)
+        result += (d > 0 ? "," : "") + std::string(1, "xyz"[d]);
+      return time_dependent ? result + ",t" : result;
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  ParsedExpression<dim>::ParsedExpression(const std::string &text,
+                                          const unsigned int n_components,
+                                          const bool         time_dependent,
+                                          const std::string &entry)
+    : entry(entry)
+    , time_dependent(time_dependent)
+  {
+    const auto parts = Utilities::split_string_list(text, ';');
+    AssertThrow(parts.size() == n_components,
+                ExcMessage(entry + ": <" + text + "> must be " +
+                           std::to_string(n_components) +
+                           " expression(s) separated by ';', in " +
+                           variables() + "."));
+    zero = std::all_of(parts.begin(), parts.end(), [](const std::string &part) {
+      return part == "0";
+    });
+    function = std::make_unique<FunctionParser<dim>>(n_components);
+    try
+      {
+        function->initialize(variable_list(dim, time_dependent),
+                             parts,
+                             {{"pi", numbers::PI}},
+                             time_dependent);
+        // deal.II parses the expressions at their first evaluation: do it
+        // now, so that a parse error is reported as one (the value itself
+        // may be anything here).
+        for (unsigned int c = 0; c < n_components; ++c)
+          function->value(Point<dim>(), c);
+      }
+    catch (const std::exception &)
+      {
+        AssertThrow(false,
+                    ExcMessage(entry + ": <" + text +
+                               "> is not a list of expressions in " +
+                               variables() +
+                               " that muparser can read (check the variable "
+                               "names, brackets and operators)."));
+      }
+  }
+
+
+
+  template <int dim>
+  ParsedExpression<dim>::~ParsedExpression() = default;
+
+
+
+  template <int dim>
+  unsigned int
+  ParsedExpression<dim>::n_components() const
+  {
+    return function->n_components;
+  }
+
+
+
+  template <int dim>
+  bool
+  ParsedExpression<dim>::is_zero() const
+  {
+    return zero;
+  }
+
+
+
+  template <int dim>
+  std::string
+  ParsedExpression<dim>::variables() const
+  {
+    std::string result;
+    for (unsigned int d = 0; d < dim; ++d)
+      result += (d > 0 ? ", " : "") + std::string(1, "xyz"[d]);
+    return time_dependent ? result + " and t" : result;
+  }
+
+
+
+  template <int dim>
+  double
+  ParsedExpression<dim>::value(const Point<dim>  &point,
+                               const double       time,
+                               const unsigned int component) const
+  {
+    double result = 0;
+    try
+      {
+        // FunctionParser keeps the time as its state.
+        function->set_time(time);
+        result = function->value(point, component);
+      }
+    catch (const std::exception &)
+      {
+        result = std::numeric_limits<double>::quiet_NaN();
+      }
+    AssertThrow(
+      std::isfinite(result),
+      ExcMessage(
+        entry + ": expression " + std::to_string(component + 1) +
+        " does not evaluate to a finite number at (" +
+        Utilities::to_string(point[0]) +
+        (dim > 1 ? ", " + Utilities::to_string(point[1]) : std::string()) +
+        (dim > 2 ? ", " + Utilities::to_string(point[2]) : std::string()) +
+        (time_dependent ? "), t = " + Utilities::to_string(time) :
+                          std::string(")")) +
+        "."));
+    return result;
+  }
+
+
+
+  template <int dim>
+  Tensor<1, dim>
+  ParsedExpression<dim>::vector_value(const Point<dim> &point,
+                                      const double      time) const
+  {
+    Assert(n_components() == dim, ExcInternalError());
+    Tensor<1, dim> result;
+    for (unsigned int d = 0; d < dim; ++d)
+      result[d] = value(point, time, d);
+    return result;
+  }
+
+
+
+  template class ParsedExpression<1>;
+  template class ParsedExpression<2>;
+  template class ParsedExpression<3>;
+} // namespace MpmOtm

@@ -1,0 +1,83 @@
+#include <deal.II/base/utilities.h>
+
+#include <mpm_otm/base/subsection_names.h>
+
+#include <algorithm>
+#include <cctype>
+
+namespace MpmOtm
+{
+  void
+  SubsectionNames::declare_parameters(ParameterHandler &prm)
+  {
+    prm.declare_entry("Materials",
+                      "",
+                      Patterns::List(Patterns::Anything()),
+                      "Names of further materials, each defined in a "
+                      "subsection 'Material <name>' with the entries of "
+                      "subsection 'Material' (which defines the material "
+                      "named 'default'), e.g. 'sand, clay'.");
+    prm.declare_entry("Bodies",
+                      "",
+                      Patterns::List(Patterns::Anything()),
+                      "Names of the bodies of Problem = custom, each defined "
+                      "in a subsection 'Body <name>' (shape, material, "
+                      "initial velocity and stress). Empty: one box given "
+                      "by 'Custom problem/Material lower corner' and "
+                      "'Material upper corner' of the default material.");
+    prm.declare_entry("Boundaries",
+                      "",
+                      Patterns::List(Patterns::Anything()),
+                      "Names of boundary conditions, each defined in a "
+                      "subsection 'Boundary <name>' (where: boundary ids or "
+                      "the grid nodes in a box; what: fixed, slip, friction "
+                      "or a prescribed velocity). Sides not named keep the "
+                      "problem's own conditions (free for Problem = custom "
+                      "unless 'Custom problem/Fixed components' fixes them).");
+  }
+
+
+
+  std::vector<std::string>
+  SubsectionNames::names_in(const ParameterHandler &prm,
+                            const std::string      &entry)
+  {
+    const auto names = Utilities::split_string_list(prm.get(entry));
+    for (unsigned int i = 0; i < names.size(); ++i)
+      {
+        AssertThrow(!names[i].empty() &&
+                      std::all_of(names[i].begin(),
+                                  names[i].end(),
+                                  [](const char c) {
+                                    return std::isalnum(
+                                             static_cast<unsigned char>(c)) ||
+                                           c == '_' || c == '-';
+                                  }),
+                    ExcMessage(entry + ": the name <" + names[i] +
+                               "> may contain only letters, digits, '_' and "
+                               "'-'."));
+        AssertThrow(std::find(names.begin(), names.begin() + i, names[i]) ==
+                        names.begin() + i &&
+                      (entry != "Materials" || names[i] != "default"),
+                    ExcMessage(entry + ": the name <" + names[i] +
+                               "> is given twice (or is 'default', the name "
+                               "of subsection 'Material')."));
+      }
+    return names;
+  }
+
+
+
+  SubsectionNames
+  SubsectionNames::read(const std::string &parameter_text)
+  {
+    ParameterHandler prm;
+    declare_parameters(prm);
+    prm.parse_input_from_string(parameter_text, "", true);
+    SubsectionNames result;
+    result.materials  = names_in(prm, "Materials");
+    result.bodies     = names_in(prm, "Bodies");
+    result.boundaries = names_in(prm, "Boundaries");
+    return result;
+  }
+} // namespace MpmOtm

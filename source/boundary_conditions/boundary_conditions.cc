@@ -1,0 +1,516 @@
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/utilities.h>
+
+#include <mpm_otm/base/subsection_names.h>
+#include <mpm_otm/boundary_conditions/boundary_conditions.h>
+#include <mpm_otm/grid/background_grid.h>
+#include <mpm_otm/grid_system/nodal_system.h>
+#include <mpm_otm/shape_functions/shape_functions.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace MpmOtm
+{
+  namespace
+  {
+    /**
+     * The unit normal of boundary face @p f of @p cell, pointing out of the
+     * cell.
+     */
+    template <int dim>
+    Tensor<1, dim>
+    outward_normal(
+      const typename Triangulation<dim>::active_cell_iterator &cell,
+      const unsigned int                                       f)
+    {
+      const auto     face = cell->face(f);
+      Tensor<1, dim> normal;
+      if constexpr (dim == 1)
+        normal[0] = 1.;
+      else if constexpr (dim == 2)
+        {
+          const Tensor<1, 2> tangent = face->vertex(1) - face->vertex(0);
+          normal[0]                  = tangent[1];
+          normal[1]                  = -tangent[0];
+        }
+      else
+        {
+          const Tensor<1, 3> a = face->vertex(1) - face->vertex(0);
+          const Tensor<1, 3> b =
+            face->vertex(face->n_vertices() - 1) - face->vertex(0);
+          normal = cross_product_3d(a, b);
+        }
+      normal /= normal.norm();
+      if ((face->center() - cell->center()) * normal < 0.)
+        normal = -normal;
+      return normal;
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  void
+  BoundaryConditions<dim>::declare_parameters(
+    ParameterHandler               &prm,
+    const std::vector<std::string> &names)
+  {
+    const std::string zeros = (dim == 1 ? "0" : dim == 2 ? "0; 0" : "0; 0; 0");
+    for (const auto &name : names)
+      {
+        prm.enter_subsection("Boundary " + name);
+        prm.declare_entry(
+          "Type",
+          "fixed",
+          Patterns::Selection("fixed|slip|friction|velocity"),
+          "fixed: velocity zero; slip: normal velocity zero, tangential "
+          "free (the boundary must be planar); friction: Coulomb friction "
+          "with 'Friction coefficient' (the material may separate from the "
+          "wall; planar boundary); velocity: the components 'Velocity "
+          "components' prescribed to 'Velocity', the others free.");
+        prm.declare_entry("Boundary ids",
+                          "",
+                          Patterns::List(Patterns::Integer(0)),
+                          "Boundary ids the condition acts on (box grids: 0 "
+                          "x_min, 1 x_max, 2 y_min, 3 y_max, 4 z_min, 5 "
+                          "z_max; Mesh file: its physical tags, 0 on "
+                          "untagged faces); empty: the grid vertices in the "
+                          "box below.");
+        prm.declare_entry("Box lower corner",
+                          "",
+                          Patterns::List(Patterns::Double(), 0, dim),
+                          "With no Boundary ids: the condition acts on the "
+                          "functions of the grid vertices in this box (e.g. "
+                          "a footing or a platen; Type = fixed or "
+                          "velocity).");
+        prm.declare_entry("Box upper corner",
+                          "",
+                          Patterns::List(Patterns::Double(), 0, dim),
+                          "Upper corner of that box.");
+        prm.declare_entry("Friction coefficient",
+                          "0",
+                          Patterns::Double(),
+                          "Type = friction: Coulomb coefficient mu >= 0.");
+        prm.declare_entry("Velocity",
+                          zeros,
+                          Patterns::Anything(),
+                          "Type = velocity: dim expressions in t (m/s), "
+                          "separated by ';'.");
+        prm.declare_entry("Velocity components",
+                          std::string("xyz").substr(0, 1) +
+                            (dim > 1 ? ", y" : "") + (dim > 2 ? ", z" : ""),
+                          Patterns::List(Patterns::Selection("x|y|z")),
+                          "Type = velocity: the components prescribed; the "
+                          "others are free.");
+        prm.leave_subsection();
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  BoundaryConditions<dim>::parse_parameters(ParameterHandler &prm)
+  {
+    conditions.clear();
+    for (const auto &name : SubsectionNames::names_in(prm, "Boundaries"))
+      {
+        const std::string path = "Boundary " + name + "/";
+        prm.enter_subsection("Boundary " + name);
+        Condition condition;
+        condition.name         = name;
+        const std::string type = prm.get("Type");
+        condition.type         = type == "fixed"    ? Type::fixed :
+                                 type == "slip"     ? Type::slip :
+                                 type == "friction" ? Type::friction :
+                                                      Type::velocity;
+        for (const int id : Utilities::string_to_int(
+               Utilities::split_string_list(prm.get("Boundary ids"))))
+          condition.boundary_ids.push_back(id);
+        const auto lower = Utilities::string_to_double(
+          Utilities::split_string_list(prm.get("Box lower corner")));
+        const auto upper = Utilities::string_to_double(
+          Utilities::split_string_list(prm.get("Box upper corner")));
+        condition.on_box = condition.boundary_ids.empty();
+        if (condition.on_box)
+          {
+            AssertThrow(lower.size() == dim && upper.size() == dim,
+                        ExcMessage(path +
+                                   "Boundary ids is empty, so Box lower "
+                                   "corner and Box upper corner must give " +
+                                   std::to_string(dim) + " values each."));
+            Point<dim> p1, p2;
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                p1[d] = lower[d];
+                p2[d] = upper[d];
+                AssertThrow(p2[d] >= p1[d],
+                            ExcMessage(path + "Box upper corner must not be "
+                                              "below Box lower corner."));
+              }
+            condition.box = BoundingBox<dim>(std::make_pair(p1, p2));
+            AssertThrow(condition.type == Type::fixed ||
+                          condition.type == Type::velocity,
+                        ExcMessage(path + "Type = " + type +
+                                   " needs a boundary with a normal: give "
+                                   "Boundary ids (a box of nodes takes "
+                                   "Type = fixed or velocity)."));
+          }
+        else
+          AssertThrow(lower.empty() && upper.empty(),
+                      ExcMessage(path + "give either Boundary ids or a box "
+                                        "(Box lower/upper corner), not "
+                                        "both."));
+        condition.friction_coefficient = prm.get_double("Friction coefficient");
+        AssertThrow(condition.friction_coefficient >= 0.,
+                    ExcMessage(path + "Friction coefficient = " +
+                               prm.get("Friction coefficient") +
+                               " must be >= 0."));
+        condition.components.fill(condition.type != Type::velocity);
+        if (condition.type == Type::velocity)
+          {
+            for (const auto &component :
+                 Utilities::split_string_list(prm.get("Velocity components")))
+              {
+                const unsigned int c = component[0] - 'x';
+                AssertThrow(c < dim,
+                            ExcMessage(path + "Velocity components: <" +
+                                       component + "> is not a direction in " +
+                                       std::to_string(dim) + "D."));
+                condition.components[c] = true;
+              }
+            // The velocity is a function of time only: read it as an
+            // expression in t on a one-dimensional point.
+            condition.velocity =
+              std::make_unique<ParsedExpression<dim>>(prm.get("Velocity"),
+                                                      dim,
+                                                      true,
+                                                      path + "Velocity");
+            condition.velocity->vector_value(Point<dim>(), 0.);
+          }
+        prm.leave_subsection();
+        conditions.push_back(std::move(condition));
+      }
+  }
+
+
+
+  template <int dim>
+  bool
+  BoundaryConditions<dim>::empty() const
+  {
+    return conditions.empty();
+  }
+
+
+
+  template <int dim>
+  void
+  BoundaryConditions<dim>::setup(const ShapeFunctions<dim> &shape_functions,
+                                 const BackgroundGrid<dim> &grid)
+  {
+    const auto &triangulation = grid.triangulation();
+    communicator              = triangulation.get_communicator();
+    functions                 = &shape_functions;
+    background_grid           = &grid;
+    const IndexSet owned      = shape_functions.locally_owned_functions();
+    for (auto &condition : conditions)
+      {
+        const std::string path = "Boundary " + condition.name + "/";
+        condition.functions.clear();
+        if (condition.on_box)
+          find_box_functions(condition);
+        else
+          {
+            for (const auto id : condition.boundary_ids)
+              for (const auto function : shape_functions.boundary_functions(id))
+                if (owned.is_element(function))
+                  condition.functions.push_back(
+                    owned.index_within_set(function));
+
+            // The outward normal: the mean of the faces' normals, which must
+            // all be equal for slip and friction.
+            Tensor<1, dim> sum;
+            double         n_faces = 0;
+            for (const auto &cell : triangulation.active_cell_iterators())
+              if (cell->is_locally_owned())
+                for (const unsigned int f : cell->face_indices())
+                  if (cell->face(f)->at_boundary() &&
+                      std::find(condition.boundary_ids.begin(),
+                                condition.boundary_ids.end(),
+                                cell->face(f)->boundary_id()) !=
+                        condition.boundary_ids.end())
+                    {
+                      sum += outward_normal<dim>(cell, f);
+                      n_faces += 1;
+                    }
+            sum     = Utilities::MPI::sum(sum, communicator);
+            n_faces = Utilities::MPI::sum(n_faces, communicator);
+            if (!(n_faces > 0))
+              {
+                std::string ids;
+                for (const auto id : grid.boundary_ids())
+                  ids += (ids.empty() ? "" : ", ") + std::to_string(id);
+                AssertThrow(false,
+                            ExcMessage(path +
+                                       "Boundary ids: no face of the grid "
+                                       "has these ids; the grid's boundary "
+                                       "ids are " +
+                                       ids + " (box grids: the sides 0 to " +
+                                       std::to_string(2 * dim - 1) +
+                                       "; Mesh file: its physical tags, 0 "
+                                       "on untagged faces)."));
+              }
+            condition.normal = sum / sum.norm();
+            double deviation = 0;
+            for (const auto &cell : triangulation.active_cell_iterators())
+              if (cell->is_locally_owned())
+                for (const unsigned int f : cell->face_indices())
+                  if (cell->face(f)->at_boundary() &&
+                      std::find(condition.boundary_ids.begin(),
+                                condition.boundary_ids.end(),
+                                cell->face(f)->boundary_id()) !=
+                        condition.boundary_ids.end())
+                    deviation = std::max(
+                      deviation,
+                      (outward_normal<dim>(cell, f) - condition.normal).norm());
+            deviation = Utilities::MPI::max(deviation, communicator);
+            AssertThrow(deviation < 1e-8 || condition.type == Type::fixed ||
+                          condition.type == Type::velocity,
+                        ExcMessage(path + "Type = slip and friction need a "
+                                          "planar boundary, but the faces "
+                                          "of these Boundary ids have "
+                                          "different normals; give each "
+                                          "planar part its own id."));
+          }
+        std::sort(condition.functions.begin(), condition.functions.end());
+        condition.functions.erase(std::unique(condition.functions.begin(),
+                                              condition.functions.end()),
+                                  condition.functions.end());
+        condition.reaction_sum = Tensor<1, dim>();
+        condition.displacement = Tensor<1, dim>();
+        condition.n_steps      = 0;
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  BoundaryConditions<dim>::find_box_functions(Condition &condition) const
+  {
+    const IndexSet owned = functions->locally_owned_functions();
+    Point<dim>     lower = condition.box.get_boundary_points().first;
+    Point<dim>     upper = condition.box.get_boundary_points().second;
+    lower += condition.displacement;
+    upper += condition.displacement;
+    const BoundingBox<dim> box(std::make_pair(lower, upper));
+    condition.functions.clear();
+    for (const auto &cell :
+         background_grid->triangulation().active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const unsigned int v : cell->vertex_indices())
+          if (box.point_inside(cell->vertex(v), 1e-10))
+            {
+              const auto function = functions->vertex_function(cell, v);
+              AssertThrow(function != numbers::invalid_dof_index,
+                          ExcMessage("Boundary " + condition.name +
+                                     "/Box lower corner: a condition on the "
+                                     "grid vertices in a box needs shape "
+                                     "functions that belong to vertices "
+                                     "(Shape functions = linear); use "
+                                     "Boundary ids instead."));
+              if (owned.is_element(function))
+                condition.functions.push_back(owned.index_within_set(function));
+            }
+    std::sort(condition.functions.begin(), condition.functions.end());
+    condition.functions.erase(std::unique(condition.functions.begin(),
+                                          condition.functions.end()),
+                              condition.functions.end());
+  }
+
+
+
+  template <int dim>
+  std::vector<FixedComponents<dim>>
+  BoundaryConditions<dim>::fixed_components() const
+  {
+    std::vector<FixedComponents<dim>> result;
+    for (const auto &condition : conditions)
+      if (!condition.on_box)
+        for (const auto id : condition.boundary_ids)
+          {
+            if (condition.type == Type::fixed)
+              result.push_back(FixedComponents<dim>::all(id));
+            else if (condition.type == Type::slip)
+              for (unsigned int d = 0; d < dim; ++d)
+                if (std::abs(std::abs(condition.normal[d]) - 1.) < 1e-12)
+                  {
+                    FixedComponents<dim> fixed{id, {}};
+                    fixed.fixed.fill(false);
+                    fixed.fixed[d] = true;
+                    result.push_back(fixed);
+                  }
+          }
+    return result;
+  }
+
+
+
+  template <int dim>
+  Tensor<1, dim>
+  BoundaryConditions<dim>::corrected_velocity(const Condition      &condition,
+                                              const Tensor<1, dim> &v,
+                                              const double          time) const
+  {
+    const double normal_velocity = v * condition.normal;
+    switch (condition.type)
+      {
+        case Type::fixed:
+          return Tensor<1, dim>();
+        case Type::slip:
+          return v - normal_velocity * condition.normal;
+        case Type::friction:
+          {
+            if (normal_velocity <= 0.)
+              return v;
+            const Tensor<1, dim> tangential =
+              v - normal_velocity * condition.normal;
+            const double speed = tangential.norm();
+            const double reduction =
+              std::min(condition.friction_coefficient * normal_velocity, speed);
+            return speed > 0. ? tangential * (1. - reduction / speed) :
+                                tangential;
+          }
+        default:
+          {
+            Tensor<1, dim>       result = v;
+            const Tensor<1, dim> prescribed =
+              condition.velocity->vector_value(Point<dim>(), time);
+            for (unsigned int d = 0; d < dim; ++d)
+              if (condition.components[d])
+                result[d] = prescribed[d];
+            return result;
+          }
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  BoundaryConditions<dim>::constrain_accelerations(NodalSystem<dim> &system,
+                                                   const double      time,
+                                                   const double      dt)
+  {
+    // A box of prescribed velocity moves with its displacement.
+    for (auto &condition : conditions)
+      if (condition.on_box && condition.type == Type::velocity)
+        find_box_functions(condition);
+    for (auto &condition : conditions)
+      {
+        for (const unsigned int i : condition.functions)
+          {
+            const double m = system.lumped_mass.local_element(i);
+            if (!(m > 0.))
+              continue;
+            Tensor<1, dim> v, a;
+            for (unsigned int c = 0; c < dim; ++c)
+              {
+                v[c] = system.momentum[c].local_element(i) / m;
+                a[c] = system.acceleration[c].local_element(i);
+              }
+            const Tensor<1, dim> corrected =
+              corrected_velocity(condition, v + dt * a, time + dt);
+            for (unsigned int c = 0; c < dim; ++c)
+              system.acceleration[c].local_element(i) =
+                (corrected[c] - v[c]) / dt;
+          }
+      }
+    // The reactions once every condition has acted (a node shared by two
+    // conditions counts in both).
+    for (auto &condition : conditions)
+      {
+        for (const unsigned int i : condition.functions)
+          {
+            const double m = system.lumped_mass.local_element(i);
+            if (!(m > 0.))
+              continue;
+            for (unsigned int c = 0; c < dim; ++c)
+              condition.reaction_sum[c] +=
+                m * system.acceleration[c].local_element(i) -
+                system.force[c].local_element(i);
+          }
+        if (condition.type == Type::velocity)
+          {
+            const Tensor<1, dim> prescribed =
+              condition.velocity->vector_value(Point<dim>(), time + dt);
+            for (unsigned int d = 0; d < dim; ++d)
+              if (condition.components[d])
+                condition.displacement[d] += dt * prescribed[d];
+          }
+        ++condition.n_steps;
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  BoundaryConditions<dim>::constrain_velocities(NodalSystem<dim> &system,
+                                                const double      time) const
+  {
+    for (const auto &condition : conditions)
+      for (const unsigned int i : condition.functions)
+        {
+          if (!(system.lumped_mass.local_element(i) > 0.))
+            continue;
+          Tensor<1, dim> v;
+          for (unsigned int c = 0; c < dim; ++c)
+            v[c] = system.velocity[c].local_element(i);
+          const Tensor<1, dim> corrected =
+            corrected_velocity(condition, v, time);
+          for (unsigned int c = 0; c < dim; ++c)
+            system.velocity[c].local_element(i) = corrected[c];
+        }
+  }
+
+
+
+  template <int dim>
+  std::vector<std::string>
+  BoundaryConditions<dim>::names() const
+  {
+    std::vector<std::string> result;
+    for (const auto &condition : conditions)
+      result.push_back(condition.name);
+    return result;
+  }
+
+
+
+  template <int dim>
+  std::vector<std::pair<Tensor<1, dim>, Tensor<1, dim>>>
+  BoundaryConditions<dim>::reactions_and_displacements()
+  {
+    std::vector<std::pair<Tensor<1, dim>, Tensor<1, dim>>> result;
+    for (auto &condition : conditions)
+      {
+        const Tensor<1, dim> sum =
+          Utilities::MPI::sum(condition.reaction_sum, communicator);
+        result.emplace_back(condition.n_steps > 0 ? sum / condition.n_steps :
+                                                    sum,
+                            condition.displacement);
+        condition.reaction_sum = Tensor<1, dim>();
+        condition.n_steps      = 0;
+      }
+    return result;
+  }
+
+
+
+  template class BoundaryConditions<1>;
+  template class BoundaryConditions<2>;
+  template class BoundaryConditions<3>;
+} // namespace MpmOtm

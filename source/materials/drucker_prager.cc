@@ -1,0 +1,296 @@
+#include <mpm_otm/base/plugins.h>
+#include <mpm_otm/materials/drucker_prager.h>
+
+#include <cmath>
+#include <limits>
+
+namespace MpmOtm
+{
+  namespace
+  {
+    /**
+     * The coefficient alpha (@p cohesion_term false) or k / c
+     * (@p cohesion_term true) of the cone @p cone ("plane strain", "outer"
+     * or "inner") matched to Mohr-Coulomb with the angle @p angle (radians);
+     * alpha_psi is alpha of the dilatancy angle.
+     */
+    double
+    cone_coefficient(const std::string &cone,
+                     const double       angle,
+                     const bool         cohesion_term)
+    {
+      if (cone == "plane strain")
+        {
+          const double t = std::tan(angle);
+          return (cohesion_term ? 3. : 3. * t) / std::sqrt(9. + 12. * t * t);
+        }
+      const double s     = std::sin(angle);
+      const double denom = std::sqrt(3.) * (cone == "outer" ? 3. - s : 3. + s);
+      return (cohesion_term ? 6. * std::cos(angle) : 6. * s) / denom;
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  void
+  DruckerPrager<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Drucker-Prager");
+    {
+      prm.declare_entry("Friction angle",
+                        "30",
+                        Patterns::Double(0., 90.),
+                        "Friction angle phi (degrees), in [0, 90).");
+      prm.declare_entry("Dilatancy angle",
+                        "0",
+                        Patterns::Double(0., 90.),
+                        "Dilatancy angle psi (degrees), in [0, phi]: the "
+                        "plastic potential is sqrt(J2) + alpha_psi p, "
+                        "alpha_psi from psi as alpha from phi.");
+      prm.declare_entry("Cohesion",
+                        "0",
+                        Patterns::Double(),
+                        "Cohesion c (Pa), >= 0.");
+      prm.declare_entry("Tension cut-off",
+                        "apex",
+                        Patterns::Anything(),
+                        "Largest admissible mean stress p_t = tr(sigma)/3 "
+                        "(Pa, stresses positive in tension), in [0, c "
+                        "cot(phi)]; the word 'apex' (default) puts it at "
+                        "the cone's apex c cot(phi), i.e. no cut-off besides "
+                        "the apex (none at all for phi = 0).");
+      prm.declare_entry("Cone",
+                        "plane strain",
+                        Patterns::Selection("plane strain|outer|inner"),
+                        "Matching of the cone to Mohr-Coulomb: plane strain "
+                        "(alpha = 3 tan(phi) / sqrt(9 + 12 tan^2 phi), k = 3 "
+                        "c / sqrt(9 + 12 tan^2 phi)), outer (through the "
+                        "compressive meridians, alpha = 6 sin(phi) / "
+                        "(sqrt(3) (3 - sin(phi))), k = 6 c cos(phi) / "
+                        "(sqrt(3) (3 - sin(phi)))) or inner (the same with "
+                        "3 + sin(phi)).");
+    }
+    prm.leave_subsection();
+  }
+
+
+
+  template <int dim>
+  void
+  DruckerPrager<dim>::parse_parameters(ParameterHandler &prm)
+  {
+    Material<dim>::parse_parameters(prm);
+    prm.enter_subsection("Drucker-Prager");
+    const double      phi_degrees = prm.get_double("Friction angle");
+    const double      psi_degrees = prm.get_double("Dilatancy angle");
+    const std::string cone        = prm.get("Cone");
+    cohesion                      = prm.get_double("Cohesion");
+    AssertThrow(phi_degrees >= 0. && phi_degrees < 90.,
+                ExcMessage(this->entry_name("Drucker-Prager/Friction angle") +
+                           " must lie in [0, 90) degrees (here " +
+                           this->to_text(phi_degrees) + ")."));
+    AssertThrow(psi_degrees >= 0. && psi_degrees <= phi_degrees,
+                ExcMessage(this->entry_name("Drucker-Prager/Dilatancy angle") +
+                           " must lie in [0, Friction angle = " +
+                           this->to_text(phi_degrees) + "] degrees (here " +
+                           this->to_text(psi_degrees) + ")."));
+    AssertThrow(cohesion >= 0. && std::isfinite(cohesion),
+                ExcMessage(this->entry_name("Drucker-Prager/Cohesion") +
+                           " must be >= 0 (here " + this->to_text(cohesion) +
+                           " Pa)."));
+    phi               = phi_degrees * M_PI / 180.;
+    psi               = psi_degrees * M_PI / 180.;
+    alpha_phi         = cone_coefficient(cone, phi, false);
+    alpha_dilatant    = cone_coefficient(cone, psi, false);
+    k_cohesion        = cohesion * cone_coefficient(cone, phi, true);
+    const double apex = (phi > 0.) ? k_cohesion / alpha_phi :
+                                     std::numeric_limits<double>::infinity();
+    p_cut_off         = this->parse_tension_cut_off(prm,
+                                            "Drucker-Prager/Tension cut-off",
+                                            apex,
+                                            "the apex c cot(phi)");
+    prm.leave_subsection();
+  }
+
+
+
+  template <int dim>
+  double
+  DruckerPrager<dim>::yield_function(const SymmetricTensor<2, 3> &stress) const
+  {
+    const SymmetricTensor<2, 3> s = deviator(stress);
+    return std::sqrt(0.5 * (s * s)) + alpha_phi * trace(stress) / 3. -
+           k_cohesion;
+  }
+
+
+
+  template <int dim>
+  typename DruckerPrager<dim>::Return
+  DruckerPrager<dim>::return_stress(SymmetricTensor<2, 3> &stress,
+                                    double                &plastic_strain) const
+  {
+    const double                p_trial = trace(stress) / 3.;
+    const SymmetricTensor<2, 3> s_trial = deviator(stress);
+    const double tau_trial              = std::sqrt(0.5 * (s_trial * s_trial));
+    const double f_trial = tau_trial + alpha_phi * p_trial - k_cohesion;
+    if (!(f_trial > 0.) && !(p_trial > p_cut_off))
+      return Return::elastic;
+
+    const double G = this->mu_lame;
+    const double K = this->lambda_lame + 2. / 3. * this->mu_lame;
+    // Multipliers of the cone and of the cut-off; the new sqrt(J2) and p.
+    double dgamma = 0., dgamma_t = 0., tau = tau_trial, p = p_trial;
+    Return type = Return::corner;
+    if (f_trial > 0.)
+      {
+        // Box 8.9 with constant cohesion.
+        dgamma = f_trial / (G + K * alpha_phi * alpha_dilatant);
+        tau    = tau_trial - G * dgamma;
+        p      = p_trial - K * alpha_dilatant * dgamma;
+        if (tau >= 0. && p <= p_cut_off)
+          type = Return::cone;
+      }
+    if (type != Return::cone && p_trial > p_cut_off &&
+        tau_trial + alpha_phi * p_cut_off - k_cohesion <= 0.)
+      {
+        dgamma   = 0.;
+        dgamma_t = (p_trial - p_cut_off) / K;
+        tau      = tau_trial;
+        p        = p_cut_off;
+        type     = Return::cut_off;
+      }
+    if (type == Return::corner)
+      {
+        // Only reached with a finite p_t (for phi = 0 without cut-off the
+        // cone return is always valid). k - alpha p_t >= 0 as p_t is at most
+        // the apex.
+        tau      = std::max(k_cohesion - alpha_phi * p_cut_off, 0.);
+        p        = p_cut_off;
+        dgamma   = (tau_trial - tau) / G;
+        dgamma_t = (p_trial - p_cut_off) / K - alpha_dilatant * dgamma;
+      }
+
+    stress = (tau_trial > 0. ? tau / tau_trial : 0.) * s_trial +
+             p * unit_symmetric_tensor<3>();
+    // |d eps^p|^2 = |deviatoric part|^2 + (volumetric part)^2 / 3 with
+    // |d gamma s^tr / (2 sqrt(J2^tr))| = d gamma / sqrt(2).
+    const double volumetric = alpha_dilatant * dgamma + dgamma_t;
+    plastic_strain += std::sqrt(
+      2. / 3. * (0.5 * dgamma * dgamma + volumetric * volumetric / 3.));
+    return type;
+  }
+
+
+
+  template <int dim>
+  void
+  DruckerPrager<dim>::return_map(
+    SymmetricTensor<2, 3>   &stress,
+    const ArrayView<double> &internal_variables) const
+  {
+    return_stress(stress, internal_variables[0]);
+  }
+
+
+
+  template <int dim>
+  bool
+  DruckerPrager<dim>::can_separate() const
+  {
+    return std::isfinite(p_cut_off);
+  }
+
+
+
+  template <int dim>
+  bool
+  DruckerPrager<dim>::is_separated(const SymmetricTensor<2, 3> &stress) const
+  {
+    const double vertex    = p_cut_off;
+    const double tolerance = 1e-12 * this->young;
+    return std::isfinite(vertex) &&
+           std::abs(trace(stress) / 3. - vertex) <= tolerance &&
+           deviator(stress).norm() <= tolerance;
+  }
+
+
+
+  template <int dim>
+  double
+  DruckerPrager<dim>::friction_angle() const
+  {
+    return phi;
+  }
+
+
+
+  template <int dim>
+  double
+  DruckerPrager<dim>::dilatancy_angle() const
+  {
+    return psi;
+  }
+
+
+
+  template <int dim>
+  double
+  DruckerPrager<dim>::alpha() const
+  {
+    return alpha_phi;
+  }
+
+
+
+  template <int dim>
+  double
+  DruckerPrager<dim>::alpha_psi() const
+  {
+    return alpha_dilatant;
+  }
+
+
+
+  template <int dim>
+  double
+  DruckerPrager<dim>::k() const
+  {
+    return k_cohesion;
+  }
+
+
+
+  template <int dim>
+  double
+  DruckerPrager<dim>::tension_cut_off() const
+  {
+    return p_cut_off;
+  }
+
+
+
+  template class DruckerPrager<1>;
+  template class DruckerPrager<2>;
+  template class DruckerPrager<3>;
+} // namespace MpmOtm
+
+MPM_OTM_REGISTER_PLUGIN(
+  MpmOtm::Material<1>,
+  MpmOtm::DruckerPrager<1>,
+  "Drucker-Prager",
+  "Drucker-Prager cone matched to Mohr-Coulomb, non-associated, with a "
+  "tension cut-off")
+MPM_OTM_REGISTER_PLUGIN(
+  MpmOtm::Material<2>,
+  MpmOtm::DruckerPrager<2>,
+  "Drucker-Prager",
+  "Drucker-Prager cone matched to Mohr-Coulomb, non-associated, with a "
+  "tension cut-off")
+MPM_OTM_REGISTER_PLUGIN(
+  MpmOtm::Material<3>,
+  MpmOtm::DruckerPrager<3>,
+  "Drucker-Prager",
+  "Drucker-Prager cone matched to Mohr-Coulomb, non-associated, with a "
+  "tension cut-off")

@@ -1,0 +1,220 @@
+#include <deal.II/base/utilities.h>
+
+#include <mpm_otm/materials/plastic_material.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+namespace MpmOtm
+{
+  namespace
+  {
+    /**
+     * The three-dimensional stress of a point in plane strain (2D) or
+     * uniaxial strain (1D).
+     */
+    template <int dim>
+    SymmetricTensor<2, 3>
+    to_three_dimensions(const StressState<dim> &state)
+    {
+      SymmetricTensor<2, 3> stress;
+      for (unsigned int i = 0; i < dim; ++i)
+        for (unsigned int j = i; j < dim; ++j)
+          stress[i][j] = state.stress[i][j];
+      for (unsigned int d = dim; d < 3; ++d)
+        stress[d][d] = state.out_of_plane_stress;
+      return stress;
+    }
+
+    /**
+     * The velocity gradient padded with zeros (no motion out of the plane or
+     * the line).
+     */
+    template <int dim>
+    Tensor<2, 3>
+    to_three_dimensions(const Tensor<2, dim> &velocity_gradient)
+    {
+      Tensor<2, 3> result;
+      for (unsigned int i = 0; i < dim; ++i)
+        for (unsigned int j = 0; j < dim; ++j)
+          result[i][j] = velocity_gradient[i][j];
+      return result;
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  std::vector<std::string>
+  PlasticMaterial<dim>::internal_variables() const
+  {
+    std::vector<std::string> names{"plastic_strain"};
+    const auto               others = additional_internal_variables();
+    names.insert(names.end(), others.begin(), others.end());
+    if (can_separate())
+      names.push_back("separation");
+    return names;
+  }
+
+
+
+  template <int dim>
+  std::vector<std::string>
+  PlasticMaterial<dim>::additional_internal_variables() const
+  {
+    return {};
+  }
+
+
+
+  template <int dim>
+  bool
+  PlasticMaterial<dim>::can_separate() const
+  {
+    return false;
+  }
+
+
+
+  template <int dim>
+  bool
+  PlasticMaterial<dim>::is_separated(const SymmetricTensor<2, 3> &) const
+  {
+    return false;
+  }
+
+
+
+  template <int dim>
+  SymmetricTensor<2, 3>
+  PlasticMaterial<dim>::elastic_trial_stress(
+    const SymmetricTensor<2, 3> &stress,
+    const Tensor<2, 3>          &velocity_gradient,
+    const double                 dt) const
+  {
+    const SymmetricTensor<2, 3> strain_increment =
+      dt * symmetrize(velocity_gradient);
+    const Tensor<2, 3> spin_increment =
+      0.5 * dt * (velocity_gradient - transpose(velocity_gradient));
+    const double volumetric_increment = trace(strain_increment);
+    // The rotation part of Eq. 2.4, sigma + W sigma - sigma W, integrated
+    // with the Hughes-Winget rotation R = (I - W/2)^-1 (I + W/2): R is
+    // orthogonal for every skew W and equals I + W + O(W^2), so that the
+    // update is Eq. 2.4 to first order and a rigid rotation keeps the
+    // invariants of the stress to round-off.
+    // In closed form (the Cayley transform of the skew W):
+    // R = I + (W + W^2 / 2) / (1 + |w|^2 / 4), |w|^2 = -tr(W^2) / 2.
+    const Tensor<2, 3> spin_squared = spin_increment * spin_increment;
+    const Tensor<2, 3> rotation =
+      Tensor<2, 3>(unit_symmetric_tensor<3>()) +
+      (spin_increment + 0.5 * spin_squared) / (1. - trace(spin_squared) / 8.);
+    const Tensor<2, 3> old_stress(stress);
+    return symmetrize(rotation * old_stress * transpose(rotation)) +
+           this->lambda_lame * volumetric_increment *
+             unit_symmetric_tensor<3>() +
+           2. * this->mu_lame * strain_increment -
+           volumetric_increment * stress;
+  }
+
+
+
+  template <int dim>
+  void
+  PlasticMaterial<dim>::update_stress(const Tensor<2, dim> &,
+                                      const Tensor<2, dim> &velocity_gradient,
+                                      const double          dt,
+                                      StressState<dim>     &state) const
+  {
+    Tensor<2, 3>             gradient = to_three_dimensions(velocity_gradient);
+    const ArrayView<double> &internal = state.internal_variables;
+    double *const            separation =
+      can_separate() ? &internal[internal.size() - 1] : nullptr;
+    // A compression first closes the separation, without stress.
+    const double volumetric = dt * trace(gradient);
+    if (separation != nullptr && *separation > 0. && volumetric < 0.)
+      {
+        const double closed = std::min(*separation, -volumetric);
+        *separation -= closed;
+        gradient +=
+          Tensor<2, 3>((closed / (3. * dt)) * unit_symmetric_tensor<3>());
+      }
+    SymmetricTensor<2, 3> stress =
+      elastic_trial_stress(to_three_dimensions(state), gradient, dt);
+    const double trial_trace = trace(stress);
+    return_map(stress, internal);
+    // Returned to the apex: the volumetric plastic strain of the return is
+    // the separation taken in this step.
+    if (separation != nullptr && is_separated(stress))
+      *separation += (trial_trace - trace(stress)) /
+                     (3. * this->lambda_lame + 2. * this->mu_lame);
+    for (unsigned int i = 0; i < dim; ++i)
+      for (unsigned int j = i; j < dim; ++j)
+        state.stress[i][j] = stress[i][j];
+    state.out_of_plane_stress = (dim < 3) ? stress[2][2] : 0.;
+  }
+
+
+
+  template <int dim>
+  double
+  PlasticMaterial<dim>::equivalent_plastic_strain(
+    const ArrayView<const double> &internal_variables) const
+  {
+    return internal_variables[0];
+  }
+
+
+
+  template <int dim>
+  std::string
+  PlasticMaterial<dim>::to_text(const double value)
+  {
+    std::ostringstream text;
+    text << std::setprecision(6) << value;
+    return text.str();
+  }
+
+
+
+  template <int dim>
+  double
+  PlasticMaterial<dim>::parse_tension_cut_off(
+    ParameterHandler  &prm,
+    const std::string &entry,
+    const double       apex,
+    const std::string &apex_text) const
+  {
+    const std::string text = Utilities::trim(prm.get("Tension cut-off"));
+    if (text == "apex")
+      return apex;
+    const std::string allowed =
+      " must be the word 'apex' or a number of Pa >= 0" +
+      (std::isfinite(apex) ?
+         " and <= " + to_text(apex) + " (" + apex_text + ")" :
+         std::string()) +
+      "; here it is <" + text + ">.";
+    double value = 0;
+    try
+      {
+        value = Utilities::string_to_double(text);
+      }
+    catch (...)
+      {
+        AssertThrow(false, ExcMessage(this->entry_name(entry) + allowed));
+      }
+    // A value above the apex by round-off only (a relative 1e-12, e.g. the
+    // apex computed elsewhere from c and phi) counts as the apex.
+    AssertThrow(value >= 0 && std::isfinite(value) &&
+                  !(value > apex * (1. + 1e-12)),
+                ExcMessage(this->entry_name(entry) + allowed));
+    return std::min(value, apex);
+  }
+
+
+
+  template class PlasticMaterial<1>;
+  template class PlasticMaterial<2>;
+  template class PlasticMaterial<3>;
+} // namespace MpmOtm

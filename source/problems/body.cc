@@ -1,0 +1,356 @@
+#include <deal.II/base/utilities.h>
+
+#include <mpm_otm/materials/material_library.h>
+#include <mpm_otm/problems/body.h>
+
+#include <cmath>
+
+namespace MpmOtm
+{
+  namespace
+  {
+    /**
+     * Read a point from a comma-separated list of dim numbers.
+     */
+    template <int dim>
+    Point<dim>
+    read_point(const std::string &text, const std::string &entry)
+    {
+      std::vector<double> values;
+      try
+        {
+          values =
+            Utilities::string_to_double(Utilities::split_string_list(text));
+        }
+      catch (const std::exception &)
+        {
+          values.clear();
+        }
+      AssertThrow(values.size() == dim,
+                  ExcMessage(entry + ": <" + text + "> must be " +
+                             std::to_string(dim) +
+                             " numbers separated by ','."));
+      Point<dim> point;
+      for (unsigned int d = 0; d < dim; ++d)
+        point[d] = values[d];
+      return point;
+    }
+
+    /**
+     * Number of independent stress components and their names, in the order
+     * of the entry "Initial stress" (that of the particle CSV).
+     */
+    template <int dim>
+    std::vector<std::pair<unsigned int, unsigned int>>
+    stress_components()
+    {
+      std::vector<std::pair<unsigned int, unsigned int>> result;
+      for (unsigned int d = 0; d < dim; ++d)
+        result.emplace_back(d, d);
+      if (dim >= 2)
+        result.emplace_back(0, 1);
+      if (dim == 3)
+        {
+          result.emplace_back(1, 2);
+          result.emplace_back(0, 2);
+        }
+      return result;
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  void
+  Body<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    const std::string zeros = (dim == 1 ? "0" : dim == 2 ? "0; 0" : "0; 0; 0");
+    prm.declare_entry("Shape",
+                      "box",
+                      Patterns::Selection("box|ball|polygon|level set"),
+                      "box: between Lower corner and Upper corner; ball: a "
+                      "disk (2D) or sphere (3D) of Radius around Centre; "
+                      "polygon (2D): inside the closed polygon of Vertices; "
+                      "level set: where the expression Level set is <= 0.");
+    prm.declare_entry("Lower corner",
+                      "",
+                      Patterns::List(Patterns::Double(), 0, dim),
+                      "Shape = box: lower corner, one value per direction.");
+    prm.declare_entry("Upper corner",
+                      "",
+                      Patterns::List(Patterns::Double(), 0, dim),
+                      "Shape = box: upper corner, one value per direction.");
+    prm.declare_entry("Centre",
+                      "",
+                      Patterns::List(Patterns::Double(), 0, dim),
+                      "Shape = ball: centre, one value per direction.");
+    prm.declare_entry("Radius",
+                      "0",
+                      Patterns::Double(0.),
+                      "Shape = ball: radius (m).");
+    prm.declare_entry("Vertices",
+                      "",
+                      Patterns::Anything(),
+                      "Shape = polygon (2D): the corners in order, 'x0, y0; "
+                      "x1, y1; ...' (at least 3, the last joined to the "
+                      "first; clockwise or counter-clockwise).");
+    prm.declare_entry("Level set",
+                      "",
+                      Patterns::Anything(),
+                      "Shape = level set: an expression in the coordinates "
+                      "(x, y, z) that is <= 0 inside the body, e.g. "
+                      "'(x-1)^2 + (y-1)^2 - 0.25'.");
+    prm.declare_entry("Material",
+                      "default",
+                      Patterns::Anything(),
+                      "Name of the body's material: 'default' (subsection "
+                      "'Material') or a name of the entry 'Materials'.");
+    prm.declare_entry("Initial velocity",
+                      zeros,
+                      Patterns::Anything(),
+                      "dim expressions in (x, y, z), separated by ';'.");
+    prm.declare_entry(
+      "Initial stress",
+      "0",
+      Patterns::Anything(),
+      "'geostatic': vertical stress from the weight of the material above "
+      "(gravity from subsection 'Gravity', vertical = the last coordinate), "
+      "horizontal stresses K0 times it; or expressions in (x, y, z) "
+      "separated by ';' for the components xx (1D); xx, yy, xy (2D); xx, yy, "
+      "zz, xy, yz, xz (3D), in Pa, tension positive; in 1D and 2D one more "
+      "may follow: the lateral (1D) or out-of-plane (2D) stress, which is "
+      "otherwise the elastic value of uniaxial/plane strain. '0': no "
+      "stress.");
+    prm.declare_entry("Lateral stress ratio",
+                      "",
+                      Patterns::Anything(),
+                      "K0 of a geostatic initial stress (a number > 0). "
+                      "Empty: 1 - sin(phi) for a frictional material, "
+                      "nu / (1 - nu) otherwise.");
+  }
+
+
+
+  template <int dim>
+  void
+  Body<dim>::parse_parameters(ParameterHandler           &prm,
+                              const std::string          &name,
+                              const MaterialLibrary<dim> &materials)
+  {
+    body_name        = name;
+    path             = "Body " + name;
+    const auto entry = [&](const std::string &e) {
+      return path + "/" + e;
+    };
+
+    const std::string shape_name = prm.get("Shape");
+    if (shape_name == "box")
+      {
+        shape = Shape::box;
+        const Point<dim> lower =
+          read_point<dim>(prm.get("Lower corner"), entry("Lower corner"));
+        const Point<dim> upper =
+          read_point<dim>(prm.get("Upper corner"), entry("Upper corner"));
+        for (unsigned int d = 0; d < dim; ++d)
+          AssertThrow(upper[d] > lower[d],
+                      ExcMessage(entry("Upper corner") +
+                                 " must be above Lower corner in every "
+                                 "direction."));
+        box = BoundingBox<dim>(std::make_pair(lower, upper));
+      }
+    else if (shape_name == "ball")
+      {
+        shape  = Shape::ball;
+        centre = read_point<dim>(prm.get("Centre"), entry("Centre"));
+        radius = prm.get_double("Radius");
+        AssertThrow(radius > 0,
+                    ExcMessage(entry("Radius") + " must be positive."));
+      }
+    else if (shape_name == "polygon")
+      {
+        AssertThrow(dim == 2,
+                    ExcMessage(entry("Shape") +
+                               " = polygon needs Dimension = 2; use box, "
+                               "ball or level set."));
+        shape = Shape::polygon;
+        polygon.clear();
+        for (const auto &vertex :
+             Utilities::split_string_list(prm.get("Vertices"), ';'))
+          polygon.push_back(read_point<dim>(vertex, entry("Vertices")));
+        AssertThrow(polygon.size() >= 3,
+                    ExcMessage(entry("Vertices") +
+                               " needs at least 3 points 'x, y' separated "
+                               "by ';'."));
+      }
+    else
+      {
+        shape = Shape::level_set;
+        level_set =
+          std::make_unique<ParsedExpression<dim>>(prm.get("Level set"),
+                                                  1,
+                                                  false,
+                                                  entry("Level set"));
+      }
+
+    material = materials.material_id(prm.get("Material"), entry("Material"));
+    material_model = &materials[material];
+    velocity =
+      std::make_unique<ParsedExpression<dim>>(prm.get("Initial velocity"),
+                                              dim,
+                                              false,
+                                              entry("Initial velocity"));
+
+    const std::string stress_text = prm.get("Initial stress");
+    geostatic                     = (stress_text == "geostatic");
+    stress.reset();
+    if (!geostatic && stress_text != "0")
+      {
+        const unsigned int n =
+          Utilities::split_string_list(stress_text, ';').size();
+        const unsigned int n_in_plane = dim * (dim + 1) / 2;
+        AssertThrow(n == n_in_plane || (dim < 3 && n == n_in_plane + 1),
+                    ExcMessage(entry("Initial stress") + ": <" + stress_text +
+                               "> must be 'geostatic', '0', or " +
+                               std::to_string(n_in_plane) +
+                               (dim < 3 ?
+                                  " or " + std::to_string(n_in_plane + 1) :
+                                  std::string()) +
+                               " expressions separated by ';'."));
+        stress =
+          std::make_unique<ParsedExpression<dim>>(stress_text,
+                                                  n,
+                                                  false,
+                                                  entry("Initial stress"));
+      }
+
+    lateral_ratio           = -1;
+    const std::string ratio = prm.get("Lateral stress ratio");
+    if (!ratio.empty())
+      {
+        double value = -1;
+        try
+          {
+            value = Utilities::string_to_double(ratio);
+          }
+        catch (const std::exception &)
+          {
+            value = -1;
+          }
+        AssertThrow(value > 0,
+                    ExcMessage(entry("Lateral stress ratio") + ": <" + ratio +
+                               "> must be a positive number, or empty for "
+                               "the default."));
+        lateral_ratio = value;
+      }
+  }
+
+
+
+  template <int dim>
+  const std::string &
+  Body<dim>::name() const
+  {
+    return body_name;
+  }
+
+
+
+  template <int dim>
+  bool
+  Body<dim>::contains(const Point<dim> &point) const
+  {
+    switch (shape)
+      {
+        case Shape::box:
+          return box.point_inside(point);
+        case Shape::ball:
+          return point.distance(centre) <= radius;
+        case Shape::polygon:
+          {
+            // Crossing number of a ray in +x direction.
+            bool inside = false;
+            for (unsigned int i = 0, j = polygon.size() - 1; i < polygon.size();
+                 j = i++)
+              {
+                const Point<dim> &a = polygon[i];
+                const Point<dim> &b = polygon[j];
+                if ((a[1] > point[1]) != (b[1] > point[1]) &&
+                    point[0] <
+                      a[0] + (b[0] - a[0]) * (point[1] - a[1]) / (b[1] - a[1]))
+                  inside = !inside;
+              }
+            return inside;
+          }
+        default:
+          return level_set->value(point) <= 0.;
+      }
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  Body<dim>::material_id() const
+  {
+    return material;
+  }
+
+
+
+  template <int dim>
+  Tensor<1, dim>
+  Body<dim>::initial_velocity(const Point<dim> &point) const
+  {
+    return velocity->vector_value(point);
+  }
+
+
+
+  template <int dim>
+  bool
+  Body<dim>::has_geostatic_stress() const
+  {
+    return geostatic;
+  }
+
+
+
+  template <int dim>
+  double
+  Body<dim>::lateral_stress_ratio() const
+  {
+    if (lateral_ratio > 0)
+      return lateral_ratio;
+    const double phi = material_model->friction_angle();
+    if (phi > 0)
+      return 1. - std::sin(phi);
+    const double nu = material_model->poissons_ratio();
+    return nu / (1. - nu);
+  }
+
+
+
+  template <int dim>
+  std::pair<SymmetricTensor<2, dim>, double>
+  Body<dim>::initial_stress(const Point<dim> &point) const
+  {
+    SymmetricTensor<2, dim> sigma;
+    if (!stress)
+      return {sigma, 0.};
+    const auto components = stress_components<dim>();
+    for (unsigned int k = 0; k < components.size(); ++k)
+      sigma[components[k].first][components[k].second] =
+        stress->value(point, 0., k);
+    const double out_of_plane =
+      (stress->n_components() > components.size()) ?
+        stress->value(point, 0., components.size()) :
+        material_model->elastic_out_of_plane_stress(sigma);
+    return {sigma, out_of_plane};
+  }
+
+
+
+  template class Body<1>;
+  template class Body<2>;
+  template class Body<3>;
+} // namespace MpmOtm
