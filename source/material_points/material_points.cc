@@ -655,7 +655,9 @@ namespace MpmOtm
            std::vector<double>(properties.begin(), properties.end())});
         to_remove.push_back(particle);
       }
-    if (to_remove.empty())
+    // Every rank updates the global numbers (a collective call) if a point
+    // moved on any rank.
+    if (Utilities::MPI::max(to_remove.empty() ? 0u : 1u, communicator()) == 0)
       return;
     particles->remove_particles(to_remove);
     for (const auto &point : moved)
@@ -754,9 +756,20 @@ namespace MpmOtm
           }
         moved.push_back({particle, candidate});
       }
-    if (Utilities::MPI::min(all_local ? 1 : 0, communicator()) == 0)
+    // One collective call decides for all ranks: whether some point left
+    // its rank (then deal.II's sort, which every rank enters), and whether
+    // some point changed cell on any rank (then every rank updates the
+    // particle handler's global numbers, which is collective too, also a
+    // rank whose points all stayed).
+    const std::array<unsigned int, 2> local_decision{
+      {all_local ? 0u : 1u, moved.empty() ? 0u : 1u}};
+    std::array<unsigned int, 2> decision;
+    Utilities::MPI::max(ArrayView<const unsigned int>(local_decision.data(), 2),
+                        communicator(),
+                        ArrayView<unsigned int>(decision.data(), 2));
+    if (decision[0] == 1)
       return false;
-    if (moved.empty())
+    if (decision[1] == 0)
       return true;
 
     // Move the points that entered another cell of this rank.

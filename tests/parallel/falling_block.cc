@@ -1,0 +1,103 @@
+// A block of material that starts inside one rank's part of the grid and
+// falls freely under gravity (issue 16, item 1): in every step its points
+// change cell on that rank while the other rank owns no point, and later
+// they move to the other rank. Both ranks must reach the same collective
+// calls in every step (the run used to hang in the point location), and
+// every point must follow the discrete free fall of MPM (USL, lumped mass,
+// no stress): v_n = n g dt, x_n = X + g dt^2 n (n + 1) / 2, to round-off.
+// Linear functions in 2D and 3D, quadratic B-splines in 2D.
+
+#include <mpm_otm/material_points/material_points.h>
+
+#include "../tests.h"
+
+using namespace MpmOtm;
+using namespace MpmOtmTests;
+
+template <int dim>
+void
+test(const std::string &shape_functions, const unsigned int cells)
+{
+  const MPI_Comm world = MPI_COMM_WORLD;
+  // p4est orders the cells along a Z curve, so rank 0 owns the lower half
+  // (in the last coordinate) and rank 1 the upper half, where the block
+  // starts; it falls 0.2 in 0.2 s, into the lower half.
+  std::string lower = "0", upper = "1", blocks = std::to_string(cells),
+              body_lower = "0.1", body_upper = "0.4", gravity = "0";
+  for (unsigned int d = 1; d < dim; ++d)
+    {
+      lower += ", 0";
+      upper += ", 1";
+      blocks += ", " + std::to_string(cells);
+      body_lower += (d + 1 < dim) ? ", 0.1" : ", 0.6";
+      body_upper += (d + 1 < dim) ? ", 0.4" : ", 0.85";
+      gravity += (d + 1 < dim) ? ", 0" : ", -10";
+    }
+  const double dt        = 1e-3;
+  auto         simulator = make_simulator<dim>(
+    "",
+    "set Dimension = " + std::to_string(dim) +
+      "\nset Problem = custom\n"
+              "set Shape functions = " +
+      shape_functions + "\nsubsection Mesh\n set Lower corner = " + lower +
+      "\n set Upper corner = " + upper + "\n set Subdivisions = " + blocks +
+      "\nend\n"
+              "subsection Particles\n set Particles per cell = 2\n"
+              "end\n"
+              "subsection Material\n set Young's modulus = 1e3\n"
+              " set Density = 1\nend\n"
+              "set Bodies = block\nsubsection Body block\n"
+              " set Lower corner = " +
+      body_lower + "\n set Upper corner = " + body_upper +
+      "\nend\n"
+              "subsection Gravity\n set Vector = " +
+      gravity +
+      "\nend\n"
+              "subsection Time\n set End time = 0.25\n"
+              " set Time step = 1e-3\nend\n"
+              "subsection Output\n set Interval = 10\nend\n",
+    "output-falling-" + shape_functions + "-" + std::to_string(dim) + "d");
+
+  using Layout          = PropertyLayout<dim>;
+  const auto &points    = simulator->material_points();
+  const auto  n_points  = points.n_global_points();
+  const bool  on_rank_0 = Utilities::MPI::this_mpi_process(world) == 0;
+  const types::particle_index n_initial =
+    points.particle_handler().n_locally_owned_particles();
+  types::particle_index n_final = 0;
+  double                largest = 0;
+  simulator->run([&](const unsigned int step, const Statistics<dim> &) {
+    Tensor<1, dim> fall;
+    fall[dim - 1] = -10. * dt * dt * step * (step + 1.) / 2.;
+    for (const auto &particle : points.particle_handler())
+      {
+        const Point<dim> X(Layout::get_vector(particle.get_properties(),
+                                              Layout::initial_position));
+        largest =
+          std::max(largest, (particle.get_location() - X - fall).norm());
+      }
+    n_final = points.particle_handler().n_locally_owned_particles();
+  });
+  largest = Utilities::MPI::max(largest, world);
+  check(points.n_global_points() == n_points,
+        shape_functions + ": points were lost");
+  check(Utilities::MPI::sum(on_rank_0 ? n_initial : 0, world) == 0,
+        shape_functions + ": the block did not start on rank 1 alone");
+  check(Utilities::MPI::sum(on_rank_0 ? n_final : 0, world) > 0,
+        shape_functions + ": no point fell onto rank 0");
+  check(largest < 1e-12,
+        shape_functions + ": free-fall error " + std::to_string(largest));
+  deallog << dim << "D, " << shape_functions << ": " << n_points
+          << " points fell from rank 1 onto rank 0 as the discrete free fall"
+          << std::endl;
+}
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  initlog();
+  test<2>("linear", 8);
+  test<2>("B-spline", 8);
+  test<3>("linear", 4);
+}
