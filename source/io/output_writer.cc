@@ -2,6 +2,7 @@
 #include <deal.II/base/utilities.h>
 #include <deal.II/numerics/data_out.h>
 
+#include <mpm_otm/base/collective_error.h>
 #include <mpm_otm/grid/background_grid.h>
 #include <mpm_otm/grid_system/nodal_system.h>
 #include <mpm_otm/io/output_writer.h>
@@ -11,7 +12,10 @@
 #include <mpm_otm/shape_functions/shape_functions.h>
 
 #include <algorithm>
+#include <cerrno>
+#include <cstring>
 #include <filesystem>
+#include <functional>
 #include <iomanip>
 #include <sstream>
 
@@ -153,6 +157,98 @@ namespace MpmOtm
     {
       return Utilities::int_to_string(step, 5);
     }
+
+
+
+    /**
+     * Write the file @p file_name with @p write under a temporary name and
+     * rename it when it is complete, so that no reader (ParaView, or a look
+     * after a killed run) ever finds a partial file under its name. Returns
+     * an empty string, or, if a write failed (e.g. the disk is full), a
+     * sentence naming the file.
+     */
+    std::string
+    write_file_atomically(const std::string                         &file_name,
+                          const std::function<void(std::ostream &)> &write)
+    {
+      const std::string temporary = file_name + ".tmp";
+      std::ofstream     file(temporary);
+      if (file)
+        write(file);
+      file.close();
+      std::error_code error;
+      if (file)
+        std::filesystem::rename(temporary, file_name, error);
+      if (file && !error)
+        return "";
+      const std::string reason =
+        error ? error.message() : std::string(std::strerror(errno));
+      std::filesystem::remove(temporary, error);
+      return "Could not write <" + file_name + ">: " + reason + ". ";
+    }
+
+
+
+    /**
+     * Write step @p step of the time series @p name (particles or grid) to
+     * @p directory: every rank its piece NAME_NNNNN.R.vtu of @p patches;
+     * then, once every piece is complete, rank 0 the index NAME_NNNNN.pvtu
+     * and the time series NAME.pvd of @p records, to which the step is
+     * added at @p time. Each file is written with write_file_atomically(); a
+     * failed write stops all ranks, naming the file. Collective.
+     */
+    template <int patch_dim, int dim>
+    void
+    write_time_series_step(const DataOutInterface<patch_dim, dim> &patches,
+                           const std::string                      &directory,
+                           const std::string                      &name,
+                           const unsigned int                      step,
+                           const double                            time,
+                           std::vector<std::pair<double, std::string>> &records,
+                           const MPI_Comm communicator)
+    {
+      const unsigned int rank = Utilities::MPI::this_mpi_process(communicator);
+      const unsigned int n_ranks =
+        Utilities::MPI::n_mpi_processes(communicator);
+      const unsigned int digits = Utilities::needed_digits(n_ranks - 1);
+      const std::string  base   = name + "_" + step_string(step);
+      const auto         piece  = [&](const unsigned int r) {
+        return base + "." + Utilities::int_to_string(r, digits) + ".vtu";
+      };
+      const std::string advice =
+        "Free space on the disk of Output/Directory or choose another one.";
+      stop_if_any_rank_failed(communicator,
+                              write_file_atomically(directory + "/" +
+                                                      piece(rank),
+                                                    [&](std::ostream &out) {
+                                                      patches.write_vtu(out);
+                                                    }),
+                              "",
+                              advice);
+
+      const std::string index = base + ".pvtu";
+      records.emplace_back(time, index);
+      std::string problem;
+      if (rank == 0)
+        {
+          std::vector<std::string> pieces;
+          for (unsigned int r = 0; r < n_ranks; ++r)
+            pieces.push_back(piece(r));
+          problem =
+            write_file_atomically(directory + "/" + index,
+                                  [&](std::ostream &out) {
+                                    patches.write_pvtu_record(out, pieces);
+                                  });
+          if (problem.empty())
+            problem =
+              write_file_atomically(directory + "/" + name + ".pvd",
+                                    [&](std::ostream &out) {
+                                      DataOutBase::write_pvd_record(out,
+                                                                    records);
+                                    });
+        }
+      stop_if_any_rank_failed(communicator, problem, "", advice);
+    }
   } // namespace
 
 
@@ -232,19 +328,23 @@ namespace MpmOtm
       {
         std::error_code error;
         std::filesystem::create_directories(output_directory, error);
-        std::ofstream parameters(output_directory + "/parameters.prm");
-        if (error || !parameters)
-          problem = "Output/Directory: cannot create or write to <" +
-                    output_directory + ">" +
-                    (error ? ": " + error.message() : std::string()) + ".";
+        if (error)
+          problem = "Output/Directory: cannot create <" + output_directory +
+                    ">: " + error.message() + ".";
         else
-          prm.print_parameters(parameters, ParameterHandler::PRM);
+          problem =
+            write_file_atomically(output_directory + "/parameters.prm",
+                                  [&](std::ostream &out) {
+                                    prm.print_parameters(out,
+                                                         ParameterHandler::PRM);
+                                  });
       }
     problem = Utilities::MPI::broadcast(communicator, problem, 0);
     AssertThrow(problem.empty(), ExcMessage(problem));
     if (Utilities::MPI::this_mpi_process(communicator) == 0)
       {
-        std::ofstream statistics(output_directory + "/statistics.csv");
+        const std::string name = output_directory + "/statistics.csv";
+        std::ofstream     statistics(name);
         statistics << "step,time,kinetic_energy,strain_energy,total_energy";
         if (has_displacement_error)
           statistics << ",displacement_rms_error,displacement_l2_error";
@@ -257,8 +357,16 @@ namespace MpmOtm
             for (unsigned int d = 0; d < dim; ++d)
               statistics << ',' << name << '_' << quantity << '_' << "xyz"[d];
         statistics << '\n';
+        statistics.close();
+        if (!statistics)
+          problem = "Could not write <" + name +
+                    ">: " + std::string(std::strerror(errno)) + ". ";
       }
-    MPI_Barrier(communicator);
+    stop_if_any_rank_failed(
+      communicator,
+      problem,
+      "",
+      "Free space on the disk of Output/Directory or choose another one.");
   }
 
 
@@ -288,9 +396,15 @@ namespace MpmOtm
         write_particle_vtu(step, time, material_points);
         write_grid_vtu(step, time, grid, shape_functions, system);
       }
+    std::string problem;
     if (write_csv)
-      write_particle_csv(step, material_points);
-    write_statistics(step, time, statistics);
+      problem += write_particle_csv(step, material_points);
+    problem += write_statistics(step, time, statistics);
+    stop_if_any_rank_failed(
+      mpi_communicator,
+      problem,
+      "",
+      "Free space on the disk of Output/Directory or choose another one.");
   }
 
 
@@ -312,13 +426,13 @@ namespace MpmOtm
     const MaterialPoints<dim> &material_points)
   {
     ParticlePatches<dim> patches(material_points, *materials);
-    const std::string    record =
-      patches.write_vtu_with_pvtu_record(output_directory + "/",
-                                         "particles",
-                                         step,
-                                         mpi_communicator,
-                                         5);
-    append_to_time_series("particles", time, record, particle_records);
+    write_time_series_step(patches,
+                           output_directory,
+                           "particles",
+                           step,
+                           time,
+                           particle_records,
+                           mpi_communicator);
   }
 
 
@@ -353,37 +467,19 @@ namespace MpmOtm
     data_out.add_data_vector(subdomain, "subdomain");
     data_out.build_patches(grid.mapping(),
                            shape_functions.dof_handler().get_fe().degree);
-    const std::string record =
-      data_out.write_vtu_with_pvtu_record(output_directory + "/",
-                                          "grid",
-                                          step,
-                                          mpi_communicator,
-                                          5);
-    append_to_time_series("grid", time, record, grid_records);
+    write_time_series_step(data_out,
+                           output_directory,
+                           "grid",
+                           step,
+                           time,
+                           grid_records,
+                           mpi_communicator);
   }
 
 
 
   template <int dim>
-  void
-  OutputWriter<dim>::append_to_time_series(
-    const std::string                           &name,
-    const double                                 time,
-    const std::string                           &record,
-    std::vector<std::pair<double, std::string>> &records) const
-  {
-    records.emplace_back(time, record);
-    if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
-      {
-        std::ofstream pvd(output_directory + "/" + name + ".pvd");
-        DataOutBase::write_pvd_record(pvd, records);
-      }
-  }
-
-
-
-  template <int dim>
-  void
+  std::string
   OutputWriter<dim>::write_particle_csv(
     const unsigned int         step,
     const MaterialPoints<dim> &material_points) const
@@ -437,7 +533,7 @@ namespace MpmOtm
 
     const auto all = Utilities::MPI::gather(mpi_communicator, rows, 0);
     if (Utilities::MPI::this_mpi_process(mpi_communicator) != 0)
-      return;
+      return "";
     std::vector<std::pair<types::particle_index, std::string>> sorted;
     for (const auto &part : all)
       sorted.insert(sorted.end(), part.begin(), part.end());
@@ -449,24 +545,27 @@ namespace MpmOtm
       "plastic_strain",
       "id,X,Y,Z,x,y,z,ux,uy,uz,vx,vy,vz,sxx,syy,szz,sxy,syz,sxz,volume,mass,"
       "material,plastic_strain"};
-    std::ofstream csv(output_directory + "/particles-" + step_string(step) +
-                      ".csv");
-    csv << header[dim - 1] << '\n';
-    for (const auto &row : sorted)
-      csv << row.second;
+    return write_file_atomically(output_directory + "/particles-" +
+                                   step_string(step) + ".csv",
+                                 [&](std::ostream &csv) {
+                                   csv << header[dim - 1] << '\n';
+                                   for (const auto &row : sorted)
+                                     csv << row.second;
+                                 });
   }
 
 
 
   template <int dim>
-  void
+  std::string
   OutputWriter<dim>::write_statistics(const unsigned int     step,
                                       const double           time,
-                                      const Statistics<dim> &statistics)
+                                      const Statistics<dim> &statistics) const
   {
     if (Utilities::MPI::this_mpi_process(mpi_communicator) != 0)
-      return;
-    std::ofstream file(output_directory + "/statistics.csv", std::ios::app);
+      return "";
+    const std::string name = output_directory + "/statistics.csv";
+    std::ofstream     file(name, std::ios::app);
     file << std::setprecision(12) << step << ',' << time << ','
          << statistics.kinetic_energy << ',' << statistics.strain_energy << ','
          << statistics.kinetic_energy + statistics.strain_energy +
@@ -486,6 +585,10 @@ namespace MpmOtm
           file << ',' << displacement[d];
       }
     file << '\n';
+    file.close();
+    return file ? std::string() :
+                  "Could not write <" + name +
+                    ">: " + std::string(std::strerror(errno)) + ". ";
   }
 
 

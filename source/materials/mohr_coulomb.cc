@@ -14,6 +14,32 @@ namespace MpmOtm
     {
       return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
     }
+
+
+
+    /**
+     * The principal values of @p stress, sorted by decreasing value: in
+     * closed form from the in-plane 2 x 2 block when z is a principal
+     * direction (every point of a 2D, plane-strain model), else deal.II's
+     * eigenvalues().
+     */
+    std::array<double, 3>
+    principal_values(const SymmetricTensor<2, 3> &stress)
+    {
+      if (stress[0][2] != 0. || stress[1][2] != 0.)
+        return eigenvalues(stress);
+      const double centre    = 0.5 * (stress[0][0] + stress[1][1]);
+      const double half_diff = 0.5 * (stress[0][0] - stress[1][1]);
+      const double radius =
+        std::sqrt(half_diff * half_diff + stress[0][1] * stress[0][1]);
+      std::array<double, 3> values{
+        {centre + radius, centre - radius, stress[2][2]}};
+      if (values[2] > values[1])
+        std::swap(values[1], values[2]);
+      if (values[1] > values[0])
+        std::swap(values[0], values[1]);
+      return values;
+    }
   } // namespace
 
 
@@ -303,7 +329,7 @@ namespace MpmOtm
     // The principal stresses first (closed form, sorted by decreasing
     // value): most points are elastic or return to the apex, where the
     // eigenvectors are not needed.
-    const std::array<double, 3> trial     = eigenvalues(stress);
+    const std::array<double, 3> trial     = principal_values(stress);
     std::array<double, 3>       principal = trial;
     const Return type = return_principal_stresses(principal, plastic_strain);
     if (type == Return::elastic)

@@ -96,8 +96,6 @@ namespace MpmOtm
   {
     const SymmetricTensor<2, 3> strain_increment =
       dt * symmetrize(velocity_gradient);
-    const Tensor<2, 3> spin_increment =
-      0.5 * dt * (velocity_gradient - transpose(velocity_gradient));
     const double volumetric_increment = trace(strain_increment);
     // The rotation part of Eq. 2.4, sigma + W sigma - sigma W, integrated
     // with the Hughes-Winget rotation R = (I - W/2)^-1 (I + W/2): R is
@@ -106,12 +104,43 @@ namespace MpmOtm
     // invariants of the stress to round-off.
     // In closed form (the Cayley transform of the skew W):
     // R = I + (W + W^2 / 2) / (1 + |w|^2 / 4), |w|^2 = -tr(W^2) / 2.
-    const Tensor<2, 3> spin_squared = spin_increment * spin_increment;
-    const Tensor<2, 3> rotation =
-      Tensor<2, 3>(unit_symmetric_tensor<3>()) +
+    // The velocity gradient of a 2D (1D) model vanishes out of the plane
+    // (line), so W and R - I live in the leading dim x dim block.
+    Tensor<2, dim> spin_increment;
+    for (unsigned int i = 0; i < dim; ++i)
+      for (unsigned int j = 0; j < dim; ++j)
+        spin_increment[i][j] =
+          0.5 * dt * (velocity_gradient[i][j] - velocity_gradient[j][i]);
+    for (unsigned int i = 0; i < 3; ++i)
+      for (unsigned int j = std::max(i + 1, static_cast<unsigned int>(dim));
+           j < 3;
+           ++j)
+        Assert(velocity_gradient[i][j] == velocity_gradient[j][i],
+               ExcMessage("The spin of a plane-strain (uniaxial-strain) "
+                          "point must lie in its plane (line)."));
+    const Tensor<2, dim> spin_squared = spin_increment * spin_increment;
+    const Tensor<2, dim> rotation =
+      Tensor<2, dim>(unit_symmetric_tensor<dim>()) +
       (spin_increment + 0.5 * spin_squared) / (1. - trace(spin_squared) / 8.);
+    // R sigma R^T of the old stress sigma; R = I outside the leading block.
+    // (Plain tensors: SymmetricTensor's element access is slower.)
     const Tensor<2, 3> old_stress(stress);
-    return symmetrize(rotation * old_stress * transpose(rotation)) +
+    Tensor<2, 3>       rotated = old_stress;
+    for (unsigned int i = 0; i < dim; ++i)
+      for (unsigned int j = i; j < 3; ++j)
+        {
+          double value = 0;
+          if (j < dim)
+            for (unsigned int k = 0; k < dim; ++k)
+              for (unsigned int l = 0; l < dim; ++l)
+                value += rotation[i][k] * old_stress[k][l] * rotation[j][l];
+          else
+            for (unsigned int k = 0; k < dim; ++k)
+              value += rotation[i][k] * old_stress[k][j];
+          rotated[i][j] = value;
+          rotated[j][i] = value;
+        }
+    return symmetrize(rotated) +
            this->lambda_lame * volumetric_increment *
              unit_symmetric_tensor<3>() +
            2. * this->mu_lame * strain_increment -

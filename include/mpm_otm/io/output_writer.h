@@ -33,7 +33,11 @@ namespace MpmOtm
    * ParaView; statistics.csv with one row per output step; and, when asked,
    * particles-NNNNN.csv with one row per material point sorted by id. NNNNN
    * is the time-step number; output is written at step 0, every Interval
-   * steps and at the end time.
+   * steps and at the end time. Files are written under a temporary name and
+   * renamed when complete, and an index (.pvtu, .pvd) only after every file
+   * it names is complete, so that a run killed at any moment leaves
+   * readable output; a failed write (a full disk) stops the run on all
+   * ranks with a message naming the file.
    */
   template <int dim>
   class OutputWriter
@@ -116,24 +120,22 @@ namespace MpmOtm
                    NodalSystem<dim>          &system);
 
     /**
-     * Add @p record (a .pvtu file) at @p time to @p records and rewrite
-     * @p name.pvd.
+     * Write particles-NNNNN.csv (rank 0; the other ranks send their rows).
+     * Returns an empty string, or a sentence naming the file if the write
+     * failed. Collective.
      */
-    void
-    append_to_time_series(
-      const std::string                           &name,
-      const double                                 time,
-      const std::string                           &record,
-      std::vector<std::pair<double, std::string>> &records) const;
-
-    void
+    std::string
     write_particle_csv(const unsigned int         step,
                        const MaterialPoints<dim> &material_points) const;
 
-    void
+    /**
+     * Append the row of @p step to statistics.csv (rank 0). Returns an
+     * empty string, or a sentence naming the file if the write failed.
+     */
+    std::string
     write_statistics(const unsigned int     step,
                      const double           time,
-                     const Statistics<dim> &statistics);
+                     const Statistics<dim> &statistics) const;
 
     std::string  output_directory;
     unsigned int interval  = 0;
