@@ -1,4 +1,5 @@
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/utilities.h>
 
 #include <mpm_otm/simulator/simulator.h>
 
@@ -7,6 +8,7 @@
 #include <iostream>
 #include <sstream>
 #include <thread>
+#include <vector>
 
 namespace
 {
@@ -25,13 +27,62 @@ namespace
         std::stringstream contents;
         contents << file.rdbuf();
         text = contents.str();
+        // A file that sets nothing would silently run the default benchmark.
+        std::istringstream lines(text);
+        std::string        line;
+        bool               sets_something = false;
+        while (!sets_something && std::getline(lines, line))
+          {
+            const std::string word =
+              dealii::Utilities::trim(line.substr(0, line.find('#')));
+            sets_something =
+              word.rfind("set ", 0) == 0 || word.rfind("subsection ", 0) == 0;
+          }
+        AssertThrow(sets_something,
+                    dealii::ExcMessage(
+                      "Parameter file <" + filename +
+                      "> sets no parameter (it is empty or holds only "
+                      "comments). Start from a file in prm/ or from the "
+                      "listing of 'mpm-otm --print-parameters 2'."));
       }
     dealii::ParameterHandler prm;
     MpmOtm::Simulator<dim>::declare_parameters(prm,
                                                MpmOtm::SubsectionNames::read(
                                                  text));
     if (!filename.empty())
-      prm.parse_input(filename);
+      try
+        {
+          prm.parse_input(filename);
+        }
+      catch (const dealii::ExceptionBase &error)
+        {
+          // A subsection "Body NAME" (Material, Boundary) whose NAME the
+          // list entry does not hold: say which entry to extend.
+          std::ostringstream message;
+          error.print_info(message);
+          const std::string text = message.str();
+          for (const auto &[kind, list] :
+               {std::pair<std::string, std::string>{"Body", "Bodies"},
+                {"Material", "Materials"},
+                {"Boundary", "Boundaries"}})
+            {
+              const std::string marker =
+                "no such subsection to be entered: " + kind + " ";
+              const auto position = text.find(marker);
+              if (position != std::string::npos)
+                {
+                  const std::string name = dealii::Utilities::trim(
+                    text.substr(position + marker.size()));
+                  AssertThrow(false,
+                              dealii::ExcMessage(
+                                "Parameter file <" + filename +
+                                ">: subsection <" + kind + " " + name +
+                                "> is not used: add " + name +
+                                " to the entry " + list + "."));
+                }
+            }
+          throw;
+        }
     MpmOtm::Simulator<dim> simulator(MPI_COMM_WORLD, std::cout);
     simulator.parse_parameters(prm);
     simulator.setup(prm);
@@ -80,19 +131,33 @@ main(int argc, char *argv[])
   std::string error_message;
   try
     {
-      const std::string argument = (argc > 1) ? argv[1] : "";
+      const std::string usage =
+        "Usage: mpm-otm [parameter file]\n"
+        "       mpm-otm --print-parameters 1|2|3\n"
+        "       mpm-otm --help\n"
+        "Without a file the default benchmark (B1b, 1D vibrating bar, MPM) "
+        "runs.\n";
+      const std::vector<std::string> arguments(argv + 1, argv + argc);
+      const std::string argument = arguments.empty() ? "" : arguments[0];
       if (argument == "--help" || argument == "-h")
         {
+          AssertThrow(arguments.size() == 1,
+                      dealii::ExcMessage("--help takes no further "
+                                         "argument.\n" +
+                                         usage));
           if (root)
-            std::cout << "Usage: mpm-otm [parameter file]\n"
-                      << "       mpm-otm --print-parameters DIM\n"
-                      << "Without a file the default benchmark (B1b, 1D "
-                         "vibrating bar, MPM) runs.\n";
+            std::cout << usage;
           return 0;
         }
       if (argument == "--print-parameters")
         {
-          const int dim = (argc > 2) ? std::atoi(argv[2]) : 2;
+          const std::string dimension =
+            (arguments.size() == 2) ? arguments[1] : "";
+          AssertThrow(dimension == "1" || dimension == "2" || dimension == "3",
+                      dealii::ExcMessage(
+                        "--print-parameters needs the dimension, 1, 2 or 3, "
+                        "and nothing else.\n" +
+                        usage));
           // One subsection of each named kind, called "example", stands for
           // those the entries Materials, Bodies and Boundaries name.
           MpmOtm::SubsectionNames examples;
@@ -100,16 +165,27 @@ main(int argc, char *argv[])
           examples.bodies     = {"example"};
           examples.boundaries = {"example"};
           dealii::ParameterHandler prm;
-          if (dim == 1)
+          if (dimension == "1")
             MpmOtm::Simulator<1>::declare_parameters(prm, examples);
-          else if (dim == 3)
+          else if (dimension == "3")
             MpmOtm::Simulator<3>::declare_parameters(prm, examples);
           else
             MpmOtm::Simulator<2>::declare_parameters(prm, examples);
+          prm.set("Dimension", dimension);
           if (root)
             prm.print_parameters(std::cout, dealii::ParameterHandler::Text);
           return 0;
         }
+      for (const auto &other : arguments)
+        AssertThrow(other.empty() || other[0] != '-',
+                    dealii::ExcMessage("Unknown option <" + other + ">.\n" +
+                                       usage));
+      AssertThrow(arguments.size() <= 1,
+                  dealii::ExcMessage(
+                    "Give one parameter file, not " +
+                    std::to_string(arguments.size()) + " (<" + arguments[0] +
+                    ">, <" + arguments[1] + ">" +
+                    (arguments.size() > 2 ? ", ..." : "") + ").\n" + usage));
 
       switch (MpmOtm::read_dimension(argument))
         {

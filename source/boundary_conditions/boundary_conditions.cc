@@ -262,8 +262,12 @@ namespace MpmOtm
                                        "; Mesh file: its physical tags, 0 "
                                        "on untagged faces)."));
               }
-            condition.normal = sum / sum.norm();
-            double deviation = 0;
+            // Faces that face each other (e.g. sides 0 and 1 in one
+            // condition) have no mean normal: not planar.
+            const bool has_normal = sum.norm() > 1e-8 * n_faces;
+            condition.normal =
+              has_normal ? Tensor<1, dim>(sum / sum.norm()) : Tensor<1, dim>();
+            double deviation = has_normal ? 0. : 1.;
             for (const auto &cell : triangulation.active_cell_iterators())
               if (cell->is_locally_owned())
                 for (const unsigned int f : cell->face_indices())
