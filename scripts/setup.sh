@@ -16,7 +16,7 @@ case "$mode" in
 esac
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 
-packages=(libdeal.ii-dev cmake g++ make numdiff ccache perl openmpi-bin)
+packages=(libdeal.ii-dev cmake g++ make numdiff ccache perl openmpi-bin procps)
 missing=()
 for package in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" ||

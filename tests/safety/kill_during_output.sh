@@ -43,9 +43,10 @@ for ranks in 1 2; do
       mpirun -np 2 --oversubscribe "$exe" "$prm" > /dev/null 2>&1 &
     fi
     run=$!
-    # Wait for the first output, then a random 0-2 s.
+    # Wait for the first output (grid.pvd is written after particles.pvd),
+    # then a random 0-2 s.
     waited=0
-    until [ -f $directory/particles.pvd ] || [ $waited -ge 600 ]; do
+    until [ -f $directory/grid.pvd ] || [ $waited -ge 600 ]; do
       sleep 0.1
       waited=$((waited + 1))
     done
