@@ -6,6 +6,7 @@
 #include <mpm_otm/algorithms/nodal_update.h>
 #include <mpm_otm/algorithms/optimal_transportation_update.h>
 #include <mpm_otm/algorithms/time_stepper.h>
+#include <mpm_otm/base/collective_error.h>
 #include <mpm_otm/base/plugins.h>
 #include <mpm_otm/boundary_conditions/boundary_conditions.h>
 #include <mpm_otm/grid/background_grid.h>
@@ -398,6 +399,33 @@ namespace MpmOtm
                             *shape_functions,
                             *system,
                             materials->maximal_wave_speed() * time_step);
+    // Every load expression is evaluated before anything is written: the
+    // body force at every point's initial position and the tractions, at
+    // the start and at the end time. An expression that does not evaluate
+    // then stops the run here instead of in its first step.
+    {
+      std::string problem;
+      try
+        {
+          using Layout = PropertyLayout<dim>;
+          for (const double t : {0., end_time})
+            {
+              if (problem_description->has_body_force())
+                for (const auto &particle : points->particle_handler())
+                  problem_description->body_force(
+                    Point<dim>(Layout::get_vector(particle.get_properties(),
+                                                  Layout::initial_position)),
+                    t);
+              for (const auto id : problem_description->traction_boundaries())
+                problem_description->traction(id, t);
+            }
+        }
+      catch (const std::exception &error)
+        {
+          problem = message_of(error) + " ";
+        }
+      stop_if_any_rank_failed(communicator, problem, "", "");
+    }
     output->initialize(prm,
                        problem_description->has_exact_solution(),
                        problem_description->has_exact_stress(),
