@@ -229,10 +229,10 @@ namespace MpmOtm
                   condition.functions.push_back(
                     owned.index_within_set(function));
 
-            // The outward normal: the mean of the faces' normals, which must
-            // all be equal for slip and friction.
-            Tensor<1, dim> sum;
-            double         n_faces = 0;
+            // The outward normal: the mean of the normals of the condition's
+            // faces (on this rank, collected once), which must all be equal
+            // for slip and friction.
+            std::vector<Tensor<1, dim>> normals;
             for (const auto &cell : triangulation.active_cell_iterators())
               if (cell->is_locally_owned())
                 for (const unsigned int f : cell->face_indices())
@@ -241,12 +241,13 @@ namespace MpmOtm
                                 condition.boundary_ids.end(),
                                 cell->face(f)->boundary_id()) !=
                         condition.boundary_ids.end())
-                    {
-                      sum += outward_normal<dim>(cell, f);
-                      n_faces += 1;
-                    }
-            sum     = Utilities::MPI::sum(sum, communicator);
-            n_faces = Utilities::MPI::sum(n_faces, communicator);
+                    normals.push_back(outward_normal<dim>(cell, f));
+            Tensor<1, dim> sum;
+            for (const auto &normal : normals)
+              sum += normal;
+            double n_faces = normals.size();
+            sum            = Utilities::MPI::sum(sum, communicator);
+            n_faces        = Utilities::MPI::sum(n_faces, communicator);
             if (!(n_faces > 0))
               {
                 std::string ids;
@@ -268,17 +269,9 @@ namespace MpmOtm
             condition.normal =
               has_normal ? Tensor<1, dim>(sum / sum.norm()) : Tensor<1, dim>();
             double deviation = has_normal ? 0. : 1.;
-            for (const auto &cell : triangulation.active_cell_iterators())
-              if (cell->is_locally_owned())
-                for (const unsigned int f : cell->face_indices())
-                  if (cell->face(f)->at_boundary() &&
-                      std::find(condition.boundary_ids.begin(),
-                                condition.boundary_ids.end(),
-                                cell->face(f)->boundary_id()) !=
-                        condition.boundary_ids.end())
-                    deviation = std::max(
-                      deviation,
-                      (outward_normal<dim>(cell, f) - condition.normal).norm());
+            for (const auto &normal : normals)
+              deviation =
+                std::max(deviation, (normal - condition.normal).norm());
             deviation = Utilities::MPI::max(deviation, communicator);
             AssertThrow(deviation < 1e-8 || condition.type == Type::fixed ||
                           condition.type == Type::velocity,

@@ -38,28 +38,10 @@ namespace MpmOtm
   {
     prm.enter_subsection("Drucker-Prager");
     {
-      prm.declare_entry("Friction angle",
-                        "30",
-                        Patterns::Double(0., 90.),
-                        "Friction angle phi (degrees), in [0, 90).");
-      prm.declare_entry("Dilatancy angle",
-                        "0",
-                        Patterns::Double(0., 90.),
-                        "Dilatancy angle psi (degrees), in [0, phi]: the "
-                        "plastic potential is sqrt(J2) + alpha_psi p, "
-                        "alpha_psi from psi as alpha from phi.");
-      prm.declare_entry("Cohesion",
-                        "0",
-                        Patterns::Double(),
-                        "Cohesion c (Pa), >= 0.");
-      prm.declare_entry("Tension cut-off",
-                        "apex",
-                        Patterns::Anything(),
-                        "Largest admissible mean stress p_t = tr(sigma)/3 "
-                        "(Pa, stresses positive in tension), in [0, c "
-                        "cot(phi)]; the word 'apex' (default) puts it at "
-                        "the cone's apex c cot(phi), i.e. no cut-off besides "
-                        "the apex (none at all for phi = 0).");
+      PlasticMaterial<dim>::declare_frictional_parameters(
+        prm,
+        "sqrt(J2) + alpha_psi p, alpha_psi from psi as alpha from phi",
+        "mean stress p_t = tr(sigma)/3");
       prm.declare_entry("Cone",
                         "plane strain",
                         Patterns::Selection("plane strain|outer|inner"),
@@ -82,25 +64,12 @@ namespace MpmOtm
   {
     Material<dim>::parse_parameters(prm);
     prm.enter_subsection("Drucker-Prager");
-    const double      phi_degrees = prm.get_double("Friction angle");
-    const double      psi_degrees = prm.get_double("Dilatancy angle");
-    const std::string cone        = prm.get("Cone");
-    cohesion                      = prm.get_double("Cohesion");
-    AssertThrow(phi_degrees >= 0. && phi_degrees < 90.,
-                ExcMessage(this->entry_name("Drucker-Prager/Friction angle") +
-                           " must lie in [0, 90) degrees (here " +
-                           this->to_text(phi_degrees) + ")."));
-    AssertThrow(psi_degrees >= 0. && psi_degrees <= phi_degrees,
-                ExcMessage(this->entry_name("Drucker-Prager/Dilatancy angle") +
-                           " must lie in [0, Friction angle = " +
-                           this->to_text(phi_degrees) + "] degrees (here " +
-                           this->to_text(psi_degrees) + ")."));
-    AssertThrow(cohesion >= 0. && std::isfinite(cohesion),
-                ExcMessage(this->entry_name("Drucker-Prager/Cohesion") +
-                           " must be >= 0 (here " + this->to_text(cohesion) +
-                           " Pa)."));
-    phi               = phi_degrees * M_PI / 180.;
-    psi               = psi_degrees * M_PI / 180.;
+    const std::string cone = prm.get("Cone");
+    const auto        parameters =
+      this->parse_frictional_parameters(prm, "Drucker-Prager");
+    phi               = parameters.friction_angle;
+    psi               = parameters.dilatancy_angle;
+    cohesion          = parameters.cohesion;
     alpha_phi         = cone_coefficient(cone, phi, false);
     alpha_dilatant    = cone_coefficient(cone, psi, false);
     k_cohesion        = cohesion * cone_coefficient(cone, phi, true);

@@ -49,30 +49,10 @@ namespace MpmOtm
   MohrCoulomb<dim>::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Mohr-Coulomb");
-    {
-      prm.declare_entry("Friction angle",
-                        "30",
-                        Patterns::Double(0., 90.),
-                        "Friction angle phi (degrees), in [0, 90).");
-      prm.declare_entry("Dilatancy angle",
-                        "0",
-                        Patterns::Double(0., 90.),
-                        "Dilatancy angle psi (degrees), in [0, phi]: the "
-                        "plastic potential is (sigma_1 - sigma_3) + (sigma_1 "
-                        "+ sigma_3) sin(psi).");
-      prm.declare_entry("Cohesion",
-                        "0",
-                        Patterns::Double(),
-                        "Cohesion c (Pa), >= 0.");
-      prm.declare_entry("Tension cut-off",
-                        "apex",
-                        Patterns::Anything(),
-                        "Largest admissible principal stress sigma_t (Pa, "
-                        "stresses positive in tension), in [0, c cot(phi)]; "
-                        "the word 'apex' (default) puts it at the apex c "
-                        "cot(phi) of the pyramid, i.e. no cut-off besides "
-                        "the apex (none at all for phi = 0).");
-    }
+    PlasticMaterial<dim>::declare_frictional_parameters(
+      prm,
+      "(sigma_1 - sigma_3) + (sigma_1 + sigma_3) sin(psi)",
+      "principal stress sigma_t");
     prm.leave_subsection();
   }
 
@@ -84,24 +64,11 @@ namespace MpmOtm
   {
     Material<dim>::parse_parameters(prm);
     prm.enter_subsection("Mohr-Coulomb");
-    const double phi_degrees = prm.get_double("Friction angle");
-    const double psi_degrees = prm.get_double("Dilatancy angle");
-    c                        = prm.get_double("Cohesion");
-    AssertThrow(phi_degrees >= 0. && phi_degrees < 90.,
-                ExcMessage(this->entry_name("Mohr-Coulomb/Friction angle") +
-                           " must lie in [0, 90) degrees (here " +
-                           this->to_text(phi_degrees) + ")."));
-    AssertThrow(psi_degrees >= 0. && psi_degrees <= phi_degrees,
-                ExcMessage(this->entry_name("Mohr-Coulomb/Dilatancy angle") +
-                           " must lie in [0, Friction angle = " +
-                           this->to_text(phi_degrees) + "] degrees (here " +
-                           this->to_text(psi_degrees) + ")."));
-    AssertThrow(c >= 0. && std::isfinite(c),
-                ExcMessage(this->entry_name("Mohr-Coulomb/Cohesion") +
-                           " must be >= 0 (here " + this->to_text(c) +
-                           " Pa)."));
-    phi          = phi_degrees * M_PI / 180.;
-    psi          = psi_degrees * M_PI / 180.;
+    const auto parameters =
+      this->parse_frictional_parameters(prm, "Mohr-Coulomb");
+    phi          = parameters.friction_angle;
+    psi          = parameters.dilatancy_angle;
+    c            = parameters.cohesion;
     sin_phi      = std::sin(phi);
     cos_phi      = std::cos(phi);
     sin_psi      = std::sin(psi);

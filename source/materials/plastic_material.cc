@@ -208,6 +208,70 @@ namespace MpmOtm
 
 
   template <int dim>
+  void
+  PlasticMaterial<dim>::declare_frictional_parameters(
+    ParameterHandler  &prm,
+    const std::string &plastic_potential,
+    const std::string &cut_off)
+  {
+    prm.declare_entry("Friction angle",
+                      "30",
+                      Patterns::Double(0., 90.),
+                      "Friction angle phi (degrees), in [0, 90).");
+    prm.declare_entry("Dilatancy angle",
+                      "0",
+                      Patterns::Double(0., 90.),
+                      "Dilatancy angle psi (degrees), in [0, phi]: the "
+                      "plastic potential is " +
+                        plastic_potential + ".");
+    prm.declare_entry("Cohesion",
+                      "0",
+                      Patterns::Double(),
+                      "Cohesion c (Pa), >= 0.");
+    prm.declare_entry("Tension cut-off",
+                      "apex",
+                      Patterns::Anything(),
+                      "Largest admissible " + cut_off +
+                        " (Pa, stresses positive in tension), in [0, c "
+                        "cot(phi)]; the word 'apex' (default) puts it at "
+                        "the apex c cot(phi) of the yield surface, i.e. no "
+                        "cut-off besides the apex (none at all for phi = "
+                        "0).");
+  }
+
+
+
+  template <int dim>
+  typename PlasticMaterial<dim>::FrictionalParameters
+  PlasticMaterial<dim>::parse_frictional_parameters(
+    ParameterHandler  &prm,
+    const std::string &model) const
+  {
+    const double phi_degrees = prm.get_double("Friction angle");
+    const double psi_degrees = prm.get_double("Dilatancy angle");
+    const double c           = prm.get_double("Cohesion");
+    AssertThrow(phi_degrees >= 0. && phi_degrees < 90.,
+                ExcMessage(this->entry_name(model + "/Friction angle") +
+                           " must lie in [0, 90) degrees (here " +
+                           to_text(phi_degrees) + ")."));
+    AssertThrow(psi_degrees >= 0. && psi_degrees <= phi_degrees,
+                ExcMessage(
+                  this->entry_name(model + "/Dilatancy angle") +
+                  " must lie in [0, Friction angle = " + to_text(phi_degrees) +
+                  "] degrees (here " + to_text(psi_degrees) + ")."));
+    AssertThrow(c >= 0. && std::isfinite(c),
+                ExcMessage(this->entry_name(model + "/Cohesion") +
+                           " must be >= 0 (here " + to_text(c) + " Pa)."));
+    FrictionalParameters parameters;
+    parameters.friction_angle  = phi_degrees * M_PI / 180.;
+    parameters.dilatancy_angle = psi_degrees * M_PI / 180.;
+    parameters.cohesion        = c;
+    return parameters;
+  }
+
+
+
+  template <int dim>
   double
   PlasticMaterial<dim>::parse_tension_cut_off(
     ParameterHandler  &prm,

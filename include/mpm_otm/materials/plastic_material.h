@@ -103,6 +103,38 @@ namespace MpmOtm
 
   protected:
     /**
+     * Friction angle phi and dilatancy angle psi (radians) and cohesion c
+     * (Pa) of a frictional model (Drucker-Prager, Mohr-Coulomb).
+     */
+    struct FrictionalParameters
+    {
+      double friction_angle  = 0;
+      double dilatancy_angle = 0;
+      double cohesion        = 0;
+    };
+
+    /**
+     * Declare, in the current subsection of @p prm (the model's), the
+     * entries every frictional model has: Friction angle, Dilatancy angle
+     * (documented with @p plastic_potential, the model's plastic potential),
+     * Cohesion and Tension cut-off (documented with @p cut_off, the stress
+     * it limits).
+     */
+    static void
+    declare_frictional_parameters(ParameterHandler  &prm,
+                                  const std::string &plastic_potential,
+                                  const std::string &cut_off);
+
+    /**
+     * Read and check the entries of declare_frictional_parameters() but the
+     * tension cut-off from the current subsection of @p prm, that of the
+     * model @p model (named in messages).
+     */
+    FrictionalParameters
+    parse_frictional_parameters(ParameterHandler  &prm,
+                                const std::string &model) const;
+
+    /**
      * @p value as text with up to 6 significant digits, for messages.
      */
     static std::string
