@@ -42,8 +42,8 @@ namespace
                     dealii::ExcMessage(
                       "Parameter file <" + filename +
                       "> sets no parameter (it is empty or holds only "
-                      "comments). Start from a file in prm/ or from the "
-                      "listing of 'mpm-otm --print-parameters 2'."));
+                      "comments). Start from a file in prm/, e.g. "
+                      "prm/G1-cantilever-static.prm."));
       }
     dealii::ParameterHandler prm;
     MpmOtm::Simulator<dim>::declare_parameters(prm,
@@ -60,7 +60,7 @@ namespace
           // list entry does not hold: say which entry to extend.
           std::ostringstream message;
           error.print_info(message);
-          const std::string text = message.str();
+          const std::string information = message.str();
           for (const auto &[kind, list] :
                {std::pair<std::string, std::string>{"Body", "Bodies"},
                 {"Material", "Materials"},
@@ -68,11 +68,11 @@ namespace
             {
               const std::string marker =
                 "no such subsection to be entered: " + kind + " ";
-              const auto position = text.find(marker);
+              const auto position = information.find(marker);
               if (position != std::string::npos)
                 {
                   const std::string name = dealii::Utilities::trim(
-                    text.substr(position + marker.size()));
+                    information.substr(position + marker.size()));
                   AssertThrow(false,
                               dealii::ExcMessage(
                                 "Parameter file <" + filename +
