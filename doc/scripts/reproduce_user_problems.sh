@@ -80,7 +80,7 @@ end"
     G2)
       echo "G2: block sliding on a rough plane, centre of mass at t = 0.5"
       {
-        echo "# theta_deg mu x_centre(0.5) x_rigid(0.5) normal_reaction m_g_cos_theta (prm/G2-friction-block.prm)"
+        echo "# theta_deg mu x_centre(0.5) x_rigid(0.5) normal_reaction m_g_cos_theta y_centre(0.5) (prm/G2-friction-block.prm)"
         for case in "30 0.3" "30 0" "10 0.3"; do
           set -- $case
           gx=$(awk "BEGIN{print 9.81 * sin($1 * atan2(0, -1) / 180)}")
@@ -97,12 +97,13 @@ end"
           for file in run/particles-*.csv; do
             step=$(basename "$file" .csv | sed 's/particles-0*//')
             awk -F, -v t="$(awk "BEGIN{print ${step:-0} * 2e-4}")" \
-              'NR > 1 { s += $14 * $6; m += $14 } END { printf "%.4g %.8e\n", t, s / m }' "$file"
+              'NR > 1 { s += $14 * $6; r += $14 * $7; m += $14 } END { printf "%.4g %.8e %.4e\n", t, s / m, r / m }' "$file"
           done | sort -g > "$data/G2-centre-$1-$2.dat"
           x=$(tail -1 "$data/G2-centre-$1-$2.dat" | cut -d' ' -f2)
+          y=$(tail -1 "$data/G2-centre-$1-$2.dat" | cut -d' ' -f3)
           exact=$(awk "BEGIN{a = $gx + $2 * $gy; if (a < 0) a = 0; print a * 0.125}")
           normal=$(awk -F, 'NR > 2 { s += $8; n++ } END { print s / n }' run/statistics.csv)
-          echo "$1 $2 $x $exact $normal $(awk "BEGIN{print -20 * $gy}")"
+          echo "$1 $2 $x $exact $normal $(awk "BEGIN{print -20 * $gy}") $y"
         done
       } | tee "$data/G2-friction-block.dat"
       ;;

@@ -66,6 +66,7 @@ namespace MpmOtm
                             system.force[c],
                             system.acceleration[c],
                             c);
+        boundary_conditions.measure_gaps(material_points, data, system);
         boundary_conditions.constrain_accelerations(system, time, dt);
         for (unsigned int c = 0; c < dim; ++c)
           system.acceleration[c].update_ghost_values();

@@ -5,6 +5,8 @@
 #include <mpm_otm/boundary_conditions/boundary_conditions.h>
 #include <mpm_otm/grid/background_grid.h>
 #include <mpm_otm/grid_system/nodal_system.h>
+#include <mpm_otm/material_points/material_points.h>
+#include <mpm_otm/shape_functions/particle_shape_data.h>
 #include <mpm_otm/shape_functions/shape_functions.h>
 
 #include <algorithm>
@@ -233,6 +235,7 @@ namespace MpmOtm
             // faces (on this rank, collected once), which must all be equal
             // for slip and friction.
             std::vector<Tensor<1, dim>> normals;
+            std::vector<Point<dim>>     centers;
             for (const auto &cell : triangulation.active_cell_iterators())
               if (cell->is_locally_owned())
                 for (const unsigned int f : cell->face_indices())
@@ -241,7 +244,10 @@ namespace MpmOtm
                                 condition.boundary_ids.end(),
                                 cell->face(f)->boundary_id()) !=
                         condition.boundary_ids.end())
-                    normals.push_back(outward_normal<dim>(cell, f));
+                    {
+                      normals.push_back(outward_normal<dim>(cell, f));
+                      centers.push_back(cell->face(f)->center());
+                    }
             Tensor<1, dim> sum;
             for (const auto &normal : normals)
               sum += normal;
@@ -269,10 +275,15 @@ namespace MpmOtm
             condition.normal =
               has_normal ? Tensor<1, dim>(sum / sum.norm()) : Tensor<1, dim>();
             double deviation = has_normal ? 0. : 1.;
+            double offset    = 0.;
             for (const auto &normal : normals)
               deviation =
                 std::max(deviation, (normal - condition.normal).norm());
+            for (const auto &center : centers)
+              offset += condition.normal * center;
             deviation = Utilities::MPI::max(deviation, communicator);
+            condition.wall_offset =
+              Utilities::MPI::sum(offset, communicator) / n_faces;
             AssertThrow(deviation < 1e-8 || condition.type == Type::fixed ||
                           condition.type == Type::velocity,
                         ExcMessage(path + "Type = slip and friction need a "
@@ -397,6 +408,47 @@ namespace MpmOtm
 
   template <int dim>
   void
+  BoundaryConditions<dim>::measure_gaps(
+    const MaterialPoints<dim>    &material_points,
+    const ParticleShapeData<dim> &data,
+    const NodalSystem<dim>       &system)
+  {
+    for (auto &condition : conditions)
+      {
+        if (condition.type != Type::friction)
+          continue;
+        const auto &partitioner = system.lumped_mass.get_partitioner();
+        if (condition.gap.get_partitioner() != partitioner)
+          condition.gap.reinit(partitioner);
+        double *const gap = condition.gap.get_values();
+        std::fill(gap,
+                  gap + partitioner->locally_owned_size() +
+                    partitioner->n_ghost_indices(),
+                  std::numeric_limits<double>::max());
+        unsigned int k = 0;
+        for (const auto &particle : material_points.particle_handler())
+          {
+            const double half_size =
+              0.5 *
+              std::pow(PropertyLayout<dim>::volume(particle.get_properties()),
+                       1. / dim);
+            const double point_gap =
+              condition.wall_offset -
+              condition.normal * particle.get_location() - half_size;
+            for (unsigned int e = data.offsets[k]; e < data.offsets[k + 1]; ++e)
+              if (data.values[e] != 0.)
+                gap[data.indices[e]] =
+                  std::min(gap[data.indices[e]], point_gap);
+            ++k;
+          }
+        condition.gap.compress(VectorOperation::min);
+      }
+  }
+
+
+
+  template <int dim>
+  void
   BoundaryConditions<dim>::constrain_accelerations(NodalSystem<dim> &system,
                                                    const double      time,
                                                    const double      dt)
@@ -407,9 +459,11 @@ namespace MpmOtm
         find_box_functions(condition);
     for (auto &condition : conditions)
       {
-        for (const unsigned int i : condition.functions)
+        condition.in_contact.assign(condition.functions.size(), false);
+        for (unsigned int k = 0; k < condition.functions.size(); ++k)
           {
-            const double m = system.lumped_mass.local_element(i);
+            const unsigned int i = condition.functions[k];
+            const double       m = system.lumped_mass.local_element(i);
             if (!(m > 0.))
               continue;
             Tensor<1, dim> v, a;
@@ -417,6 +471,14 @@ namespace MpmOtm
               {
                 v[c] = system.momentum[c].local_element(i) / m;
                 a[c] = system.acceleration[c].local_element(i);
+              }
+            if (condition.type == Type::friction)
+              {
+                const double normal_velocity = (v + dt * a) * condition.normal;
+                if (!(normal_velocity > 0. &&
+                      condition.gap.local_element(i) <= dt * normal_velocity))
+                  continue;
+                condition.in_contact[k] = true;
               }
             const Tensor<1, dim> corrected =
               corrected_velocity(condition, v + dt * a, time + dt);
@@ -459,15 +521,21 @@ namespace MpmOtm
                                                 const double      time) const
   {
     for (const auto &condition : conditions)
-      for (const unsigned int i : condition.functions)
+      for (unsigned int k = 0; k < condition.functions.size(); ++k)
         {
+          const unsigned int i = condition.functions[k];
           if (!(system.lumped_mass.local_element(i) > 0.))
             continue;
           Tensor<1, dim> v;
           for (unsigned int c = 0; c < dim; ++c)
             v[c] = system.velocity[c].local_element(i);
-          const Tensor<1, dim> corrected =
-            corrected_velocity(condition, v, time);
+          Tensor<1, dim> corrected;
+          if (condition.type != Type::friction)
+            corrected = corrected_velocity(condition, v, time);
+          else if (condition.in_contact[k])
+            corrected = v - (v * condition.normal) * condition.normal;
+          else
+            corrected = v;
           for (unsigned int c = 0; c < dim; ++c)
             system.velocity[c].local_element(i) = corrected[c];
         }

@@ -4,6 +4,7 @@
 #include <deal.II/base/bounding_box.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/tensor.h>
+#include <deal.II/lac/la_parallel_vector.h>
 
 #include <mpm_otm/base/parsed_expression.h>
 #include <mpm_otm/problems/problem.h>
@@ -19,7 +20,11 @@ namespace MpmOtm
   template <int dim>
   class BackgroundGrid;
   template <int dim>
+  class MaterialPoints;
+  template <int dim>
   class NodalSystem;
+  template <int dim>
+  struct ParticleShapeData;
   template <int dim>
   class ShapeFunctions;
 
@@ -40,6 +45,16 @@ namespace MpmOtm
    * boundary's outward normal n, v*.n > 0) is removed and the tangential
    * velocity reduced by at most mu times the removed normal velocity - and
    * the acceleration set to (v_new - v) / dt, so that the particles follow.
+   * A frictional wall acts on a node only where the material touches it:
+   * the gap between the wall and the points in the node's support (each
+   * point's distance from the wall less half its size, the smallest over
+   * the points) must close within the step, gap <= dt v*.n. Without this
+   * test a node holds the material as soon as any point lies in its
+   * support, and the one-sided condition, which keeps every motion away
+   * from the wall, lets a vibrating or sliding body climb off the wall
+   * step by step. The nodes found in contact then keep no normal velocity
+   * in the velocities the update scheme computes at the end of the step
+   * (MUSL's re-projection), whichever its sign.
    * The reaction of a condition is the sum of m_i a_i - f_i over its nodes:
    * the force the boundary exerts on the material (lumped masses; with a
    * consistent mass matrix an approximation). Fixed and slip conditions on
@@ -84,6 +99,17 @@ namespace MpmOtm
      */
     std::vector<FixedComponents<dim>>
     fixed_components() const;
+
+    /**
+     * Measure, for every frictional condition, the gap between its wall and
+     * the material in the support of each of its nodes, from the points'
+     * locations and volumes and the shape function data @p data of the
+     * step. Collective; does nothing without frictional conditions.
+     */
+    void
+    measure_gaps(const MaterialPoints<dim>    &material_points,
+                 const ParticleShapeData<dim> &data,
+                 const NodalSystem<dim>       &system);
 
     /**
      * Correct the accelerations of the step from @p time to @p time + @p dt
@@ -140,11 +166,19 @@ namespace MpmOtm
       std::array<bool, dim>                  components{};
       std::unique_ptr<ParsedExpression<dim>> velocity;
       Tensor<1, dim>                         normal;
+      /// normal * x for the points x of a planar boundary.
+      double wall_offset = 0;
+      /// For friction: the smallest gap between the wall and the points in
+      /// the support of each function (entries of the nodal vectors).
+      LinearAlgebra::distributed::Vector<double> gap;
       /// Local indices of the locally owned functions it acts on.
       std::vector<unsigned int> functions;
-      Tensor<1, dim>            reaction_sum;
-      Tensor<1, dim>            displacement;
-      unsigned int              n_steps = 0;
+      /// For friction: whether each of them pressed against the wall in
+      /// the current step.
+      std::vector<bool> in_contact;
+      Tensor<1, dim>    reaction_sum;
+      Tensor<1, dim>    displacement;
+      unsigned int      n_steps = 0;
     };
 
     /**
