@@ -22,7 +22,7 @@ ns_per_point_step() {
   cp "$root/prm/$1" run.prm
   printf 'subsection Time\n set Time step = %s\n set End time = %s\nend\nsubsection Mesh\n set Subdivisions = %s\nend\nsubsection Output\n set Interval = 0\n set Write VTU = false\n set Write particle CSV = false\nend\n%s\n' \
     "$(awk "BEGIN{print 1e-5 * 512 / $2}")" "$(awk "BEGIN{print $steps * 1e-5 * 512 / $2}")" "$(($2 - 1))" "$3" >> run.prm
-  "$exe" run.prm > log
+  "$exe" --overwrite run.prm > log
   points=$(grep -o '[0-9]* material points' log | cut -d' ' -f1)
   t0=$(grep '^step  *0 ' log | sed 's/.*wall time = \([0-9.]*\) s/\1/')
   t1=$(grep "^step  *$steps " log | sed 's/.*wall time = \([0-9.]*\) s/\1/')

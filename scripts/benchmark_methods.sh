@@ -20,7 +20,7 @@ loop_time() {
   cp "$root/prm/$1" run.prm
   printf 'subsection Time\n set End time = %s\nend\nsubsection Mesh\n set Subdivisions = %s\nend\nsubsection Output\n set Interval = 0\n set Write VTU = false\n set Write particle CSV = false\nend\n%s\n' \
     "$(awk "BEGIN{print $steps * 1e-5}")" "$(($2 - 1))" "$3" >> run.prm
-  "$exe" run.prm > log
+  "$exe" --overwrite run.prm > log
   t0=$(grep '^step  *0 ' log | sed 's/.*wall time = \([0-9.]*\) s/\1/')
   t1=$(grep "^step  *$steps " log | sed 's/.*wall time = \([0-9.]*\) s/\1/')
   awk "BEGIN{print $t1 - $t0}"

@@ -35,7 +35,7 @@ if [ "$mode" = run ]; then
   build="$root/build-release"
   cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release
   cmake --build "$build" -j "$jobs" --target mpm-otm
-  "$build/mpm-otm"
+  "$build/mpm-otm" --overwrite
   echo "Output is in $(pwd)/output; open output/particles.pvd in ParaView."
 else
   build="$root/build-debug"

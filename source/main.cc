@@ -3,6 +3,7 @@
 
 #include <mpm_otm/simulator/simulator.h>
 
+#include <algorithm>
 #include <chrono>
 #include <fstream>
 #include <iostream>
@@ -18,7 +19,7 @@ namespace
    */
   template <int dim>
   void
-  run(const std::string &filename)
+  run(const std::string &filename, const bool overwrite)
   {
     std::string text;
     if (!filename.empty())
@@ -83,6 +84,12 @@ namespace
             }
           throw;
         }
+    if (overwrite)
+      {
+        prm.enter_subsection("Output");
+        prm.set("Overwrite", true);
+        prm.leave_subsection();
+      }
     MpmOtm::Simulator<dim> simulator(MPI_COMM_WORLD, std::cout);
     simulator.parse_parameters(prm);
     simulator.setup(prm);
@@ -132,12 +139,18 @@ main(int argc, char *argv[])
   try
     {
       const std::string usage =
-        "Usage: mpm-otm [parameter file]\n"
+        "Usage: mpm-otm [--overwrite] [parameter file]\n"
         "       mpm-otm --print-parameters 1|2|3\n"
         "       mpm-otm --help\n"
         "Without a file the default benchmark (B1b, 1D vibrating bar, MPM) "
-        "runs.\n";
-      const std::vector<std::string> arguments(argv + 1, argv + argc);
+        "runs. --overwrite lets the run replace another run's output in its "
+        "Output/Directory.\n";
+      std::vector<std::string> arguments(argv + 1, argv + argc);
+      const auto               overwrite_option =
+        std::find(arguments.begin(), arguments.end(), "--overwrite");
+      const bool overwrite = overwrite_option != arguments.end();
+      if (overwrite)
+        arguments.erase(overwrite_option);
       const std::string argument = arguments.empty() ? "" : arguments[0];
       if (argument == "--help" || argument == "-h")
         {
@@ -190,13 +203,13 @@ main(int argc, char *argv[])
       switch (MpmOtm::read_dimension(argument))
         {
           case 1:
-            run<1>(argument);
+            run<1>(argument, overwrite);
             break;
           case 2:
-            run<2>(argument);
+            run<2>(argument, overwrite);
             break;
           default:
-            run<3>(argument);
+            run<3>(argument, overwrite);
             break;
         }
     }

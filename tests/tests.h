@@ -100,6 +100,7 @@ namespace MpmOtmTests
                                 "set Directory = " +
                                 directory +
                                 "\nset Write VTU = false\n"
+                                "set Overwrite = true\n"
                                 "end\n");
     auto simulator =
       std::make_unique<MpmOtm::Simulator<dim>>(communicator, quiet);

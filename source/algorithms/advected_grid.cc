@@ -249,9 +249,10 @@ namespace MpmOtm
             message << "cell " << owned_cells[k]->id() << " (centre (" << centre
                     << ") after the step) would be compressed to a vertex "
                     << "distance of " << size
-                    << ", below c dt = " << stable_size
-                    << " for which the time step is stable (CFL, thesis "
-                    << "Eq. 2.48). ";
+                    << ", below h_min dt / dt_stable = " << stable_size
+                    << ", the size at which the time step reaches the "
+                    << "stable one (found at the start for the smallest "
+                    << "cell size h_min; it scales with the cell size). ";
             inverted = message.str();
           }
       }

@@ -205,9 +205,11 @@ namespace MpmOtm
                 if (size <= 0.)
                   message << "invert. ";
                 else
-                  message << "be compressed below c dt = " << stable_size
-                          << ", for which the time step is stable (CFL, "
-                             "thesis Eq. 2.48). ";
+                  message << "be compressed below h_min dt / dt_stable = "
+                          << stable_size
+                          << ", the size at which the time step reaches the "
+                             "stable one (found at the start for the "
+                             "smallest span h_min; it scales with the span). ";
                 problem = message.str();
               }
           }

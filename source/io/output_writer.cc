@@ -17,6 +17,7 @@
 #include <filesystem>
 #include <functional>
 #include <iomanip>
+#include <regex>
 #include <sstream>
 
 namespace MpmOtm
@@ -262,6 +263,16 @@ namespace MpmOtm
                       "output",
                       Patterns::DirectoryName(),
                       "Directory for all output (created if missing).");
+    prm.declare_entry(
+      "Overwrite",
+      "false",
+      Patterns::Bool(),
+      "Whether a run may write into a directory that holds another run's "
+      "output (a statistics.csv, parameters.prm or .pvd file); it then "
+      "first removes that run's step files (particles-NNNNN.csv, "
+      "particles_NNNNN.*, grid_NNNNN.*, the .pvd files). false: such a "
+      "directory stops the run before anything is written. The command "
+      "line option --overwrite sets it.");
     prm.declare_entry("Interval",
                       "0",
                       Patterns::Integer(0),
@@ -299,11 +310,56 @@ namespace MpmOtm
     interval                 = prm.get_integer("Interval");
     write_csv                = prm.get_bool("Write particle CSV");
     write_vtu                = prm.get_bool("Write VTU");
+    overwrite                = prm.get_bool("Overwrite");
     powell_sabin_basis_point = Utilities::string_to_double(
       Utilities::split_string_list(prm.get("Powell-Sabin basis at")));
     prm.leave_subsection();
     AssertThrow(!output_directory.empty(),
                 ExcMessage("Output/Directory must not be empty."));
+  }
+
+
+
+  template <int dim>
+  std::string
+  OutputWriter<dim>::clear_previous_output() const
+  {
+    namespace fs = std::filesystem;
+    std::error_code error;
+    if (!fs::is_directory(output_directory, error))
+      return "";
+    std::vector<std::string> found;
+    for (const std::string name :
+         {"statistics.csv", "parameters.prm", "particles.pvd", "grid.pvd"})
+      if (fs::exists(fs::symlink_status(output_directory + "/" + name, error)))
+        found.push_back(name);
+    if (found.empty())
+      return "";
+    if (!overwrite)
+      {
+        std::string names;
+        for (const auto &name : found)
+          names += (names.empty() ? "" : ", ") + name;
+        return "Output/Directory: <" + output_directory +
+               "> holds the output of another run (" + names +
+               "). Choose another Output/Directory, remove that one, or let "
+               "this run replace it: set Output/Overwrite = true or run "
+               "mpm-otm --overwrite FILE.";
+      }
+    // The step files of the earlier run, which a shorter run would leave
+    // beside its own; nothing else in the directory is touched.
+    static const std::regex step_file(
+      "(particles-[0-9]+\\.csv|(particles|grid)_[0-9]+(\\.[0-9]+)?"
+      "\\.(vtu|pvtu)|(particles|grid)\\.pvd|powell-sabin-basis\\.vtu)");
+    for (const auto &entry : fs::directory_iterator(output_directory, error))
+      if (std::regex_match(entry.path().filename().string(), step_file))
+        {
+          fs::remove(entry.path(), error);
+          if (error)
+            return "Output/Overwrite: cannot remove <" + entry.path().string() +
+                   ">: " + error.message() + ".";
+        }
+    return "";
   }
 
 
@@ -327,11 +383,13 @@ namespace MpmOtm
     if (Utilities::MPI::this_mpi_process(communicator) == 0)
       {
         std::error_code error;
-        std::filesystem::create_directories(output_directory, error);
-        if (error)
+        problem = clear_previous_output();
+        if (problem.empty())
+          std::filesystem::create_directories(output_directory, error);
+        if (problem.empty() && error)
           problem = "Output/Directory: cannot create <" + output_directory +
                     ">: " + error.message() + ".";
-        else
+        else if (problem.empty())
           problem =
             write_file_atomically(output_directory + "/parameters.prm",
                                   [&](std::ostream &out) {

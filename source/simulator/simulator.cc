@@ -5,6 +5,7 @@
 #include <mpm_otm/algorithms/fixed_grid.h>
 #include <mpm_otm/algorithms/nodal_update.h>
 #include <mpm_otm/algorithms/optimal_transportation_update.h>
+#include <mpm_otm/algorithms/stable_time_step.h>
 #include <mpm_otm/algorithms/time_stepper.h>
 #include <mpm_otm/base/collective_error.h>
 #include <mpm_otm/base/plugins.h>
@@ -155,12 +156,22 @@ namespace MpmOtm
                       "1e-3",
                       Patterns::Double(0.),
                       "Simulated time T (s).");
-    prm.declare_entry("Time step",
-                      "1e-5",
-                      Patterns::Double(0.),
-                      "Time step dt (s); must satisfy dt <= h / c (thesis "
-                      "Eq. 2.48) with h the smallest cell size and c the "
-                      "wave speed.");
+    prm.declare_entry(
+      "Time step",
+      "1e-5",
+      Patterns::Anything(),
+      "Time step dt (s), a positive number or 'auto'. It must not exceed the "
+      "stable time step 2 / omega_max of the discretisation, which the "
+      "program estimates at the start (omega_max^2 the largest eigenvalue "
+      "of M^-1 K at the initial configuration; manual, 'Time step') and "
+      "prints. auto: dt = Courant factor x 2 / omega_max.");
+    prm.declare_entry(
+      "Courant factor",
+      "0.5",
+      Patterns::Double(0., 1.),
+      "With Time step = auto, the fraction of the stable time step "
+      "2 / omega_max used, in (0, 1]. Large deformations change the "
+      "stable time step during a run, so keep a margin.");
     prm.leave_subsection();
 
     BackgroundGrid<dim>::declare_parameters(prm);
@@ -257,10 +268,23 @@ namespace MpmOtm
     deactivation_threshold = prm.get_double("Deactivation threshold");
 
     prm.enter_subsection("Time");
-    end_time  = prm.get_double("End time");
-    time_step = prm.get_double("Time step");
+    end_time                     = prm.get_double("End time");
+    const std::string step_entry = prm.get("Time step");
+    automatic_time_step          = (step_entry == "auto");
+    courant_factor               = prm.get_double("Courant factor");
     prm.leave_subsection();
-    AssertThrow(time_step > 0, ExcMessage("Time/Time step must be positive."));
+    if (!automatic_time_step)
+      {
+        char *end = nullptr;
+        time_step = std::strtod(step_entry.c_str(), &end);
+        AssertThrow(end != step_entry.c_str() && *end == '\0' &&
+                      std::isfinite(time_step) && time_step > 0,
+                    ExcMessage("Time/Time step = " + step_entry +
+                               ": must be a positive number (s) or auto."));
+      }
+    AssertThrow(courant_factor > 0,
+                ExcMessage("Time/Courant factor must be positive (at most "
+                           "1)."));
 
     grid = std::make_unique<BackgroundGrid<dim>>();
     grid->parse_parameters(prm);
@@ -293,21 +317,6 @@ namespace MpmOtm
   Simulator<dim>::setup(const ParameterHandler &prm)
   {
     grid->create(communicator, grid_motion->moves_vertices());
-
-    const double h           = grid->minimal_cell_size();
-    const double wave_speed  = materials->maximal_wave_speed();
-    const double critical_dt = h / wave_speed;
-    if (time_step > critical_dt)
-      {
-        std::ostringstream message;
-        message << "Time/Time step = " << time_step
-                << " exceeds the CFL bound h / c = " << critical_dt
-                << " (thesis Eq. 2.48; h = " << h
-                << " is the smallest cell size, c = " << wave_speed
-                << " the wave speed). Choose a time step of at most "
-                << critical_dt << ".";
-        AssertThrow(false, ExcMessage(message.str()));
-      }
 
     problem_description->initialize(materials->default_material(), grid->box());
     if (grid_motion->moves_vertices() && grid->is_box())
@@ -395,10 +404,39 @@ namespace MpmOtm
                   fixed_components,
                   deactivation_threshold,
                   mass_matrix->needs_material_boundary());
+    // The stable time step of this discretisation at the start; a larger
+    // time step is rejected before anything is written.
+    const auto stable = StableTimeStep<dim>().estimate(*points,
+                                                       *shape_functions,
+                                                       *system,
+                                                       *mass_matrix,
+                                                       *materials,
+                                                       *problem_description);
+    stable_step       = stable.time_step;
+    if (automatic_time_step)
+      time_step = courant_factor * stable.time_step;
+    if (!(time_step <= stable.time_step))
+      {
+        std::ostringstream message;
+        message << "Time/Time step = " << time_step
+                << " exceeds the stable time step 2 / omega_max = "
+                << stable.time_step << " of this discretisation (omega_max = "
+                << stable.largest_frequency
+                << " 1/s, the largest frequency of its shape functions, mass "
+                   "matrix and material points at the start; for reference "
+                   "h / c = "
+                << grid->minimal_cell_size() / materials->maximal_wave_speed()
+                << " with the smallest cell size h and the wave speed c). "
+                   "Choose a time step of at most "
+                << stable.time_step
+                << ", or Time step = auto (manual, 'Time step').";
+        AssertThrow(false, ExcMessage(message.str()));
+      }
     grid_motion->initialize(*grid,
                             *shape_functions,
                             *system,
-                            materials->maximal_wave_speed() * time_step);
+                            grid->minimal_cell_size() * time_step /
+                              stable.time_step);
     // Every load expression is evaluated before anything is written: the
     // body force at every point's initial position and the tractions, at
     // the start and at the end time. An expression that does not evaluate
@@ -442,6 +480,11 @@ namespace MpmOtm
           << points->n_global_points() << " material points, "
           << Utilities::MPI::n_mpi_processes(communicator) << " MPI rank(s)"
           << std::endl;
+    pcout << "time step " << time_step << " s = " << std::setprecision(3)
+          << time_step / stable.time_step
+          << " x the stable time step 2 / omega_max = " << stable.time_step
+          << " s (Lanczos, " << stable.iterations << " iterations)"
+          << std::setprecision(6) << std::endl;
     pcout << "set-up of the shape functions: wall time = " << std::fixed
           << std::setprecision(3) << shape_function_timer.wall_time() << " s"
           << std::defaultfloat << std::endl;
@@ -598,6 +641,24 @@ namespace MpmOtm
   Simulator<dim>::time() const
   {
     return current_time;
+  }
+
+
+
+  template <int dim>
+  double
+  Simulator<dim>::time_step_size() const
+  {
+    return time_step;
+  }
+
+
+
+  template <int dim>
+  double
+  Simulator<dim>::stable_time_step() const
+  {
+    return stable_step;
   }
 
 

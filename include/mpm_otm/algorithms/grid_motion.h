@@ -57,9 +57,12 @@ namespace MpmOtm
     /**
      * Prepare for @p grid with the functions @p shape_functions, numbered
      * as in @p system (called once, after the nodal system is set up).
-     * @p stable_cell_size = c dt is the smallest distance between two
-     * vertices of a cell for which the time step satisfies the CFL bound
-     * (thesis Eq. 2.48); a moving grid must not compress a cell below it.
+     * @p stable_cell_size = h_min dt / dt_stable is the smallest distance
+     * between two vertices of a cell for which the time step stays stable:
+     * the stable time step dt_stable found at the start for the smallest
+     * cell size h_min scales with the cell size (as the CFL bound h / c of
+     * thesis Eq. 2.48, which it equals for linear functions with lumped
+     * mass); a moving grid must not compress a cell below it.
      */
     virtual void
     initialize(BackgroundGrid<dim>       &grid,

@@ -107,6 +107,16 @@ namespace MpmOtm
     write_powell_sabin_basis(const ShapeFunctions<dim> &shape_functions) const;
 
   private:
+    /**
+     * On rank 0, before anything is written: if Output/Directory holds
+     * another run's output (statistics.csv, parameters.prm or a .pvd),
+     * return a message saying so unless Output/Overwrite, and otherwise
+     * remove that run's step files. Returns an empty string if the run may
+     * go on.
+     */
+    std::string
+    clear_previous_output() const;
+
     void
     write_particle_vtu(const unsigned int         step,
                        const double               time,
@@ -141,6 +151,7 @@ namespace MpmOtm
     unsigned int interval  = 0;
     bool         write_csv = false;
     bool         write_vtu = true;
+    bool         overwrite = false;
     /// Where to show the Powell-Sabin functions (empty: nowhere).
     std::vector<double>         powell_sabin_basis_point;
     MPI_Comm                    mpi_communicator           = MPI_COMM_WORLD;

@@ -140,12 +140,31 @@ namespace MpmOtm
     double
     time() const;
 
+    /**
+     * The time step of the run (Time step, or with Time step = auto the
+     * Courant factor times the stable one); set by setup().
+     */
+    double
+    time_step_size() const;
+
+    /**
+     * The stable time step 2 / omega_max estimated by setup()
+     * (StableTimeStep).
+     */
+    double
+    stable_time_step() const;
+
   private:
     MPI_Comm           communicator;
     ConditionalOStream pcout;
 
-    double end_time     = 0;
-    double time_step    = 0;
+    double end_time  = 0;
+    double time_step = 0;
+    /// Time step = auto: Courant factor x the stable time step.
+    bool   automatic_time_step = false;
+    double courant_factor      = 0.5;
+    /// The stable time step found at the start.
+    double stable_step  = 0;
     double current_time = 0;
     /// Functions with a smaller diagonal mass are deactivated (thesis 5.2).
     double deactivation_threshold = 0;

@@ -1,0 +1,85 @@
+#ifndef mpm_otm_algorithms_stable_time_step_h
+#define mpm_otm_algorithms_stable_time_step_h
+
+#include <mpm_otm/grid_system/mass_matrix.h>
+#include <mpm_otm/grid_system/nodal_system.h>
+#include <mpm_otm/shape_functions/particle_shape_data.h>
+
+namespace MpmOtm
+{
+  template <int dim>
+  class MaterialLibrary;
+  template <int dim>
+  class MaterialPoints;
+  template <int dim>
+  class Problem;
+  template <int dim>
+  class ShapeFunctions;
+
+  /**
+   * The largest time step for which the explicit update of the actual
+   * discretisation is stable: dt_stable = 2 / omega_max, omega_max^2 the
+   * largest eigenvalue of M^-1 K, with M the mass matrix the run uses
+   * (lumped, consistent or partially lumped, with its excluded functions)
+   * and K = sum_p V_p B_p^T C_p B_p the stiffness of the material points
+   * with each point's elastic moduli (lambda, mu: the initial tangent of
+   * every model, an upper bound for plastic ones), both at the initial
+   * configuration. The eigenvalue comes from a power iteration with
+   * matrix-free products (one pass over the points and one mass-matrix
+   * solve each), its Rayleigh quotient x^T K x / x^T M x a lower bound that
+   * rises to omega_max^2. Functions whose mass is round-off (below 1e-6 of
+   * the largest point mass) are left out. It starts from a vector that
+   * depends on the global
+   * function numbers only, so every number of ranks finds the same value
+   * to round-off. Unlike the bound h / c of thesis Eq. 2.48, which holds
+   * for linear functions with lumped mass in 1D, it accounts for the
+   * family, its degree, the mass matrix and the dimension.
+   */
+  template <int dim>
+  class StableTimeStep
+  {
+  public:
+    /**
+     * The result of an estimate.
+     */
+    struct Estimate
+    {
+      /// omega_max, the largest angular frequency (1/s).
+      double largest_frequency = 0;
+      /// 2 / omega_max (s).
+      double time_step = 0;
+      /// Power iterations done.
+      unsigned int iterations = 0;
+    };
+
+    /**
+     * Estimate the stable time step of @p material_points with
+     * @p shape_functions and @p mass_matrix. Assembles @p system (its
+     * vectors are overwritten by the first step). Collective.
+     */
+    Estimate
+    estimate(const MaterialPoints<dim>  &material_points,
+             const ShapeFunctions<dim>  &shape_functions,
+             NodalSystem<dim>           &system,
+             MassMatrix<dim>            &mass_matrix,
+             const MaterialLibrary<dim> &materials,
+             const Problem<dim>         &problem);
+
+  private:
+    using VectorType = typename NodalSystem<dim>::VectorType;
+
+    /**
+     * stiffness_product = K @p x (locally owned entries, summed over the
+     * ranks); @p x needs its ghost entries.
+     */
+    void
+    apply_stiffness(const MaterialPoints<dim>         &material_points,
+                    const MaterialLibrary<dim>        &materials,
+                    const std::array<VectorType, dim> &x,
+                    std::array<VectorType, dim>       &stiffness_product) const;
+
+    ParticleShapeData<dim> data;
+  };
+} // namespace MpmOtm
+
+#endif

@@ -1,0 +1,194 @@
+#include <deal.II/base/symmetric_tensor.h>
+#include <deal.II/lac/tridiagonal_matrix.h>
+
+#include <mpm_otm/algorithms/stable_time_step.h>
+#include <mpm_otm/material_points/material_points.h>
+#include <mpm_otm/materials/material_library.h>
+#include <mpm_otm/shape_functions/shape_functions.h>
+
+#include <cmath>
+#include <cstdint>
+
+namespace MpmOtm
+{
+  namespace
+  {
+    /**
+     * A number in [-1, 1) that depends on @p key only (splitmix64).
+     */
+    double
+    pseudo_random(std::uint64_t key)
+    {
+      key += 0x9e3779b97f4a7c15ULL;
+      key = (key ^ (key >> 30)) * 0xbf58476d1ce4e5b9ULL;
+      key = (key ^ (key >> 27)) * 0x94d049bb133111ebULL;
+      key = key ^ (key >> 31);
+      return 2. * static_cast<double>(key >> 11) / 9007199254740992. - 1.;
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  typename StableTimeStep<dim>::Estimate
+  StableTimeStep<dim>::estimate(const MaterialPoints<dim>  &material_points,
+                                const ShapeFunctions<dim>  &shape_functions,
+                                NodalSystem<dim>           &system,
+                                MassMatrix<dim>            &mass_matrix,
+                                const MaterialLibrary<dim> &materials,
+                                const Problem<dim>         &problem)
+  {
+    shape_functions.evaluate(material_points, system.partitioner(), data);
+    system.assemble(material_points, data, problem, 0., true);
+    system.finish_assembly();
+    mass_matrix.assemble(system, data);
+
+    // Lanczos for K q = lambda M q in the M inner product, with p = M q
+    // carried along so that the consistent mass matrix needs only solves:
+    // r = K q_j - alpha_j p_j - beta_(j-1) p_(j-1), w = M^-1 r,
+    // beta_j = sqrt(w . r), q_(j+1) = w / beta_j, p_(j+1) = r / beta_j. The
+    // largest eigenvalue of the tridiagonal matrix (alpha, beta) rises to
+    // the largest of M^-1 K within a few dozen steps.
+    // Functions whose mass is round-off (a point on the edge of their
+    // support, where phi_i(x_p) = 1e-16 but its gradient is not) would
+    // give omega_max ~ 1e10 h / c; the particle update multiplies their
+    // accelerations by that phi_i, so they are left out of the estimate.
+    double largest_point_mass = 0;
+    for (const double m : system.particle_mass)
+      largest_point_mass = std::max(largest_point_mass, m);
+    largest_point_mass =
+      Utilities::MPI::max(largest_point_mass,
+                          system.lumped_mass.get_mpi_communicator());
+    std::vector<unsigned int> negligible;
+    for (unsigned int i = 0; i < system.lumped_mass.locally_owned_size(); ++i)
+      if (system.lumped_mass.local_element(i) < 1e-6 * largest_point_mass)
+        negligible.push_back(i);
+
+    std::array<VectorType, dim> q, q_old, p, p_old, r;
+    for (unsigned int c = 0; c < dim; ++c)
+      {
+        for (auto *vector : {&q[c], &q_old[c], &p[c], &p_old[c], &r[c]})
+          vector->reinit(system.lumped_mass);
+        for (unsigned int i = 0; i < r[c].locally_owned_size(); ++i)
+          r[c].local_element(i) =
+            pseudo_random(dim * system.partitioner().local_to_global(i) + c);
+      }
+    std::vector<double> alpha, beta;
+    double              eigenvalue = 0;
+    Estimate            result;
+    for (unsigned int j = 0; j < 60; ++j)
+      {
+        // q_j = M^-1 r / beta, p_j = r / beta.
+        double r_norm_squared = 0;
+        for (unsigned int c = 0; c < dim; ++c)
+          {
+            for (const unsigned int i : negligible)
+              r[c].local_element(i) = 0.;
+            mass_matrix.solve(system, data, r[c], q[c], c);
+            for (const unsigned int i : negligible)
+              q[c].local_element(i) = 0.;
+            r_norm_squared += q[c] * r[c];
+          }
+        if (!(r_norm_squared > 1e-24 * (eigenvalue * eigenvalue + 1e-300)))
+          break;
+        const double norm = std::sqrt(r_norm_squared);
+        if (j > 0)
+          beta.push_back(norm);
+        for (unsigned int c = 0; c < dim; ++c)
+          {
+            q[c] /= norm;
+            p[c] = r[c];
+            p[c] /= norm;
+            q[c].update_ghost_values();
+          }
+        apply_stiffness(material_points, materials, q, r);
+        double a = 0;
+        for (unsigned int c = 0; c < dim; ++c)
+          a += q[c] * r[c];
+        alpha.push_back(a);
+        for (unsigned int c = 0; c < dim; ++c)
+          {
+            r[c].add(-a, p[c]);
+            if (j > 0)
+              r[c].add(-beta.back(), p_old[c]);
+            q[c].zero_out_ghost_values();
+            std::swap(q_old[c], q[c]);
+            std::swap(p_old[c], p[c]);
+          }
+
+        TridiagonalMatrix<double> tridiagonal(alpha.size(), true);
+        for (unsigned int k = 0; k < alpha.size(); ++k)
+          {
+            tridiagonal(k, k) = alpha[k];
+            if (k + 1 < alpha.size())
+              tridiagonal(k, k + 1) = beta[k];
+          }
+        tridiagonal.compute_eigenvalues();
+        const double largest = tridiagonal.eigenvalue(alpha.size() - 1);
+        result.iterations    = j + 1;
+        const bool converged =
+          j > 4 && std::abs(largest - eigenvalue) <= 1e-8 * largest;
+        eigenvalue = std::max(eigenvalue, largest);
+        if (converged)
+          break;
+      }
+    result.largest_frequency = std::sqrt(eigenvalue);
+    result.time_step         = eigenvalue > 0. ?
+                                 2. / result.largest_frequency :
+                                 std::numeric_limits<double>::infinity();
+    return result;
+  }
+
+
+
+  template <int dim>
+  void
+  StableTimeStep<dim>::apply_stiffness(
+    const MaterialPoints<dim>         &material_points,
+    const MaterialLibrary<dim>        &materials,
+    const std::array<VectorType, dim> &x,
+    std::array<VectorType, dim>       &stiffness_product) const
+  {
+    using Layout = PropertyLayout<dim>;
+    std::vector<double> lambda(materials.n_materials()),
+      mu(materials.n_materials());
+    for (unsigned int id = 0; id < materials.n_materials(); ++id)
+      {
+        lambda[id] = materials[id].lambda();
+        mu[id]     = materials[id].mu();
+      }
+    for (unsigned int c = 0; c < dim; ++c)
+      stiffness_product[c] = 0.;
+    unsigned int k = 0;
+    for (const auto &particle : material_points.particle_handler())
+      {
+        const auto     properties = particle.get_properties();
+        Tensor<2, dim> gradient;
+        for (unsigned int e = data.offsets[k]; e < data.offsets[k + 1]; ++e)
+          for (unsigned int c = 0; c < dim; ++c)
+            gradient[c] +=
+              x[c].local_element(data.indices[e]) * data.gradients[e];
+        const unsigned int            id = Layout::get_material_id(properties);
+        const SymmetricTensor<2, dim> strain = symmetrize(gradient);
+        const SymmetricTensor<2, dim> stress =
+          Layout::volume(properties) *
+          (lambda[id] * trace(strain) * unit_symmetric_tensor<dim>() +
+           2. * mu[id] * strain);
+        for (unsigned int e = data.offsets[k]; e < data.offsets[k + 1]; ++e)
+          {
+            const Tensor<1, dim> force = stress * data.gradients[e];
+            for (unsigned int c = 0; c < dim; ++c)
+              stiffness_product[c].local_element(data.indices[e]) += force[c];
+          }
+        ++k;
+      }
+    for (unsigned int c = 0; c < dim; ++c)
+      stiffness_product[c].compress(VectorOperation::add);
+  }
+
+
+
+  template class StableTimeStep<1>;
+  template class StableTimeStep<2>;
+  template class StableTimeStep<3>;
+} // namespace MpmOtm
