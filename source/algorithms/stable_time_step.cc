@@ -126,10 +126,10 @@ namespace MpmOtm
         tridiagonal.compute_eigenvalues();
         const double largest = tridiagonal.eigenvalue(alpha.size() - 1);
         result.iterations    = j + 1;
-        const bool converged =
-          j > 4 && std::abs(largest - eigenvalue) <= 1e-8 * largest;
-        eigenvalue = std::max(eigenvalue, largest);
-        if (converged)
+        result.last_change   = std::abs(largest - eigenvalue) / largest;
+        result.converged     = j > 4 && result.last_change <= 1e-8;
+        eigenvalue           = std::max(eigenvalue, largest);
+        if (result.converged)
           break;
       }
     result.largest_frequency = std::sqrt(eigenvalue);

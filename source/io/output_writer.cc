@@ -351,14 +351,24 @@ namespace MpmOtm
     static const std::regex step_file(
       "(particles-[0-9]+\\.csv|(particles|grid)_[0-9]+(\\.[0-9]+)?"
       "\\.(vtu|pvtu)|(particles|grid)\\.pvd|powell-sabin-basis\\.vtu)");
-    for (const auto &entry : fs::directory_iterator(output_directory, error))
-      if (std::regex_match(entry.path().filename().string(), step_file))
-        {
-          fs::remove(entry.path(), error);
-          if (error)
-            return "Output/Overwrite: cannot remove <" + entry.path().string() +
-                   ">: " + error.message() + ".";
-        }
+    // Non-throwing iteration: an error on rank 0 must reach the other
+    // ranks through the caller's broadcast.
+    std::vector<fs::path> step_files;
+    for (fs::directory_iterator entry(output_directory, error), end;
+         !error && entry != end;
+         entry.increment(error))
+      if (std::regex_match(entry->path().filename().string(), step_file))
+        step_files.push_back(entry->path());
+    if (error)
+      return "Output/Overwrite: cannot list <" + output_directory +
+             ">: " + error.message() + ".";
+    for (const auto &file : step_files)
+      {
+        fs::remove(file, error);
+        if (error)
+          return "Output/Overwrite: cannot remove <" + file.string() +
+                 ">: " + error.message() + ".";
+      }
     return "";
   }
 

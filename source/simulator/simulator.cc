@@ -483,8 +483,11 @@ namespace MpmOtm
     pcout << "time step " << time_step << " s = " << std::setprecision(3)
           << time_step / stable.time_step
           << " x the stable time step 2 / omega_max = " << stable.time_step
-          << " s (Lanczos, " << stable.iterations << " iterations)"
-          << std::setprecision(6) << std::endl;
+          << " s (Lanczos, " << stable.iterations << " iterations";
+    if (!stable.converged)
+      pcout << ", not converged: omega_max^2 changed by " << stable.last_change
+            << " in the last one";
+    pcout << ")" << std::setprecision(6) << std::endl;
     pcout << "set-up of the shape functions: wall time = " << std::fixed
           << std::setprecision(3) << shape_function_timer.wall_time() << " s"
           << std::defaultfloat << std::endl;

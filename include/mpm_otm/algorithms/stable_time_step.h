@@ -24,12 +24,13 @@ namespace MpmOtm
    * and K = sum_p V_p B_p^T C_p B_p the stiffness of the material points
    * with each point's elastic moduli (lambda, mu: the initial tangent of
    * every model, an upper bound for plastic ones), both at the initial
-   * configuration. The eigenvalue comes from a power iteration with
+   * configuration. The eigenvalue comes from at most 60 Lanczos steps with
    * matrix-free products (one pass over the points and one mass-matrix
-   * solve each), its Rayleigh quotient x^T K x / x^T M x a lower bound that
-   * rises to omega_max^2. Functions whose mass is round-off (below 1e-6 of
-   * the largest point mass) are left out. It starts from a vector that
-   * depends on the global
+   * solve each); the largest Ritz value is a lower bound that rises to
+   * omega_max^2 (so dt_stable can only come out too large, by the
+   * relative change of the last steps when they do not converge).
+   * Functions whose mass is round-off (below 1e-6 of the largest point
+   * mass) are left out. It starts from a vector that depends on the global
    * function numbers only, so every number of ranks finds the same value
    * to round-off. Unlike the bound h / c of thesis Eq. 2.48, which holds
    * for linear functions with lumped mass in 1D, it accounts for the
@@ -48,8 +49,12 @@ namespace MpmOtm
       double largest_frequency = 0;
       /// 2 / omega_max (s).
       double time_step = 0;
-      /// Power iterations done.
+      /// Lanczos steps done.
       unsigned int iterations = 0;
+      /// Whether the largest Ritz value changed by less than 1e-8
+      /// (relative) in the last step; otherwise the change in it.
+      bool   converged   = false;
+      double last_change = 0;
     };
 
     /**
