@@ -26,8 +26,8 @@ run() {
   printf 'subsection Material\n set Model = %s\n%s\nend\n' "$1" "${2:-}" >> run.prm
   "$exe" --overwrite run.prm > log
   points=$(grep -o '[0-9]* material points' log | cut -d' ' -f1)
-  t0=$(grep '^step  *0 ' log | sed 's/.*wall time = \([0-9.]*\) s/\1/')
-  t1=$(grep '^step  *100 ' log | sed 's/.*wall time = \([0-9.]*\) s/\1/')
+  t0=$(grep '^step  *0 ' log | sed 's/.*wall time = \([0-9.]*\) s.*/\1/')
+  t1=$(grep '^step  *100 ' log | sed 's/.*wall time = \([0-9.]*\) s.*/\1/')
   awk "BEGIN{printf \"%.1f\", ($t1 - $t0) * 1e9 / ($points * 100)}"
 }
 

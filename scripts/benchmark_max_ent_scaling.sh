@@ -24,8 +24,8 @@ ns_per_point_step() {
     "$(awk "BEGIN{print 1e-5 * 512 / $2}")" "$(awk "BEGIN{print $steps * 1e-5 * 512 / $2}")" "$(($2 - 1))" "$3" >> run.prm
   "$exe" --overwrite run.prm > log
   points=$(grep -o '[0-9]* material points' log | cut -d' ' -f1)
-  t0=$(grep '^step  *0 ' log | sed 's/.*wall time = \([0-9.]*\) s/\1/')
-  t1=$(grep "^step  *$steps " log | sed 's/.*wall time = \([0-9.]*\) s/\1/')
+  t0=$(grep '^step  *0 ' log | sed 's/.*wall time = \([0-9.]*\) s.*/\1/')
+  t1=$(grep "^step  *$steps " log | sed 's/.*wall time = \([0-9.]*\) s.*/\1/')
   awk "BEGIN{printf \"%.0f\", ($t1 - $t0) * 1e9 / ($points * $steps)}"
 }
 

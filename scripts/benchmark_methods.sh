@@ -21,8 +21,8 @@ loop_time() {
   printf 'subsection Time\n set End time = %s\nend\nsubsection Mesh\n set Subdivisions = %s\nend\nsubsection Output\n set Interval = 0\n set Write VTU = false\n set Write particle CSV = false\nend\n%s\n' \
     "$(awk "BEGIN{print $steps * 1e-5}")" "$(($2 - 1))" "$3" >> run.prm
   "$exe" --overwrite run.prm > log
-  t0=$(grep '^step  *0 ' log | sed 's/.*wall time = \([0-9.]*\) s/\1/')
-  t1=$(grep "^step  *$steps " log | sed 's/.*wall time = \([0-9.]*\) s/\1/')
+  t0=$(grep '^step  *0 ' log | sed 's/.*wall time = \([0-9.]*\) s.*/\1/')
+  t1=$(grep "^step  *$steps " log | sed 's/.*wall time = \([0-9.]*\) s.*/\1/')
   awk "BEGIN{print $t1 - $t0}"
 }
 

@@ -23,8 +23,8 @@ run() {
   printf 'subsection Mesh\n set Subdivisions = %s, %s\nend\n%s\n' "$1" "$2" "$extra" >> run.prm
   /usr/bin/time -v "$exe" --overwrite run.prm > log 2> time.log
   points=$(grep -o '[0-9]* material points' log | cut -d' ' -f1)
-  t0=$(grep '^step  *0 ' log | sed 's/.*wall time = \([0-9.]*\) s/\1/')
-  t1=$(grep '^step  *100 ' log | sed 's/.*wall time = \([0-9.]*\) s/\1/')
+  t0=$(grep '^step  *0 ' log | sed 's/.*wall time = \([0-9.]*\) s.*/\1/')
+  t1=$(grep '^step  *100 ' log | sed 's/.*wall time = \([0-9.]*\) s.*/\1/')
   kb=$(grep 'Maximum resident' time.log | awk '{print $NF}')
   echo "$points $(awk "BEGIN{print $t1 - $t0}") $kb"
 }

@@ -43,8 +43,8 @@ step_cost() {
   run "$1" "$2" "$3" ""
   functions=$(grep -o '[0-9]* shape functions' log | cut -d' ' -f1)
   points=$(grep -o '[0-9]* material points' log | cut -d' ' -f1)
-  t0=$(grep '^step  *0 ' log | sed 's/.*wall time = \([0-9.]*\) s/\1/')
-  t1=$(grep '^step  *2000 ' log | sed 's/.*wall time = \([0-9.]*\) s/\1/')
+  t0=$(grep '^step  *0 ' log | sed 's/.*wall time = \([0-9.]*\) s.*/\1/')
+  t1=$(grep '^step  *2000 ' log | sed 's/.*wall time = \([0-9.]*\) s.*/\1/')
   shape=$(grep '^| shape functions' log | awk -F'|' '{print $4}' | sed 's/s *$//')
   awk -v f="$functions" -v p="$points" -v t0="$t0" -v t1="$t1" -v s="$shape" \
     'BEGIN { printf "%d %d %.1f %.1f\n", f, p, (t1 - t0) * 1e9 / (p * 2000), s * 1e9 / (p * 2000) }'
@@ -60,7 +60,7 @@ subsection Time
  set End time = 1e-5
 end"
   functions=$(grep -o '[0-9]* shape functions' log | cut -d' ' -f1)
-  seconds=$(grep '^set-up of the shape functions' log | sed 's/.*wall time = \([0-9.]*\) s/\1/')
+  seconds=$(grep '^set-up of the shape functions' log | sed 's/.*wall time = \([0-9.]*\) s.*/\1/')
   echo "$functions $seconds"
 }
 

@@ -73,9 +73,16 @@ namespace MpmOtm
         loaded[id]   = true;
         traction[id] = problem.traction(id, time);
       }
-    double *force[dim];
+    // The power of the tractions at the nodal velocities of the previous
+    // step (the grid moves with them).
+    double       *force[dim];
+    const double *velocity[dim];
     for (unsigned int c = 0; c < dim; ++c)
-      force[c] = system.force[c].get_values();
+      {
+        force[c]    = system.force[c].get_values();
+        velocity[c] = system.velocity[c].get_values();
+      }
+    double power = 0.;
     for (const auto &face : boundary_faces)
       if (face.boundary_id < n_sides && loaded[face.boundary_id])
         {
@@ -83,9 +90,16 @@ namespace MpmOtm
                                        measure(face.n_vertices, face.vertices) /
                                        face.n_vertices;
           for (unsigned int v = 0; v < face.n_vertices; ++v)
-            for (unsigned int c = 0; c < dim; ++c)
-              force[c][vertex_functions[face.vertices[v]]] += share[c];
+            {
+              const unsigned int i = vertex_functions[face.vertices[v]];
+              for (unsigned int c = 0; c < dim; ++c)
+                {
+                  force[c][i] += share[c];
+                  power += share[c] * velocity[c][i];
+                }
+            }
         }
+    system.add_external_power(power);
   }
 
 

@@ -64,6 +64,9 @@ namespace MpmOtm
     unsigned int n[dim];
     for (unsigned int d = 0; d < dim; ++d)
       n[d] = splines.n_functions_in_direction(d);
+    // The power of the tractions at the nodal velocities of the previous
+    // step (the knots move with them).
+    double power = 0.;
     for (const auto id : problem.traction_boundaries())
       {
         AssertThrow(id < 2 * dim, ExcInternalError());
@@ -88,9 +91,14 @@ namespace MpmOtm
               continue;
             const unsigned int local = partitioner.global_to_local(global);
             for (unsigned int c = 0; c < dim; ++c)
-              system.force[c].local_element(local) += weight * traction[c];
+              {
+                system.force[c].local_element(local) += weight * traction[c];
+                power += weight * traction[c] *
+                         system.velocity[c].local_element(local);
+              }
           }
       }
+    system.add_external_power(power);
   }
 
 

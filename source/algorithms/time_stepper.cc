@@ -1,9 +1,11 @@
+#include <mpm_otm/algorithms/energy_monitor.h>
 #include <mpm_otm/algorithms/time_stepper.h>
 #include <mpm_otm/base/collective_error.h>
 #include <mpm_otm/material_points/material_points.h>
 #include <mpm_otm/materials/material_library.h>
 #include <mpm_otm/shape_functions/shape_functions.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -100,6 +102,8 @@ namespace MpmOtm
       TimerOutput::Scope scope(timer, "move grid, locate particles");
       grid_motion.advance(system, material_points, dt);
     }
+    work_supplied += std::max(system.external_work(dt), 0.) +
+                     boundary_conditions.take_work_of_prescribed_velocities();
     previous_dt = dt;
   }
 
@@ -197,10 +201,16 @@ namespace MpmOtm
     stop_if_any_rank_failed(system.lumped_mass.get_mpi_communicator(),
                             problem,
                             "The computation became unstable: ",
-                            "Reduce Time/Time step, or if cells at the "
-                            "material's edge were nearly empty, use Mass "
-                            "matrix = lumped or partially lumped (manual, "
-                            "'Nearly empty cells').");
+                            EnergyMonitor<dim>::advice());
+  }
+
+
+
+  template <int dim>
+  double
+  TimeStepper<dim>::supplied_work() const
+  {
+    return work_supplied;
   }
 
 

@@ -491,23 +491,29 @@ namespace MpmOtm
     // conditions counts in both).
     for (auto &condition : conditions)
       {
+        Tensor<1, dim> reaction;
         for (const unsigned int i : condition.functions)
           {
             const double m = system.lumped_mass.local_element(i);
             if (!(m > 0.))
               continue;
             for (unsigned int c = 0; c < dim; ++c)
-              condition.reaction_sum[c] +=
-                m * system.acceleration[c].local_element(i) -
-                system.force[c].local_element(i);
+              reaction[c] += m * system.acceleration[c].local_element(i) -
+                             system.force[c].local_element(i);
           }
+        condition.reaction_sum += reaction;
         if (condition.type == Type::velocity)
           {
             const Tensor<1, dim> prescribed =
               condition.velocity->vector_value(Point<dim>(), time + dt);
+            double work = 0.;
             for (unsigned int d = 0; d < dim; ++d)
               if (condition.components[d])
-                condition.displacement[d] += dt * prescribed[d];
+                {
+                  condition.displacement[d] += dt * prescribed[d];
+                  work += dt * reaction[d] * prescribed[d];
+                }
+            work_of_prescribed_velocities += std::max(work, 0.);
           }
         ++condition.n_steps;
       }
@@ -518,27 +524,48 @@ namespace MpmOtm
   template <int dim>
   void
   BoundaryConditions<dim>::constrain_velocities(NodalSystem<dim> &system,
-                                                const double      time) const
+                                                const double      time)
   {
     for (const auto &condition : conditions)
-      for (unsigned int k = 0; k < condition.functions.size(); ++k)
-        {
-          const unsigned int i = condition.functions[k];
-          if (!(system.lumped_mass.local_element(i) > 0.))
-            continue;
-          Tensor<1, dim> v;
-          for (unsigned int c = 0; c < dim; ++c)
-            v[c] = system.velocity[c].local_element(i);
-          Tensor<1, dim> corrected;
-          if (condition.type != Type::friction)
-            corrected = corrected_velocity(condition, v, time);
-          else if (condition.in_contact[k])
-            corrected = v - (v * condition.normal) * condition.normal;
-          else
-            corrected = v;
-          for (unsigned int c = 0; c < dim; ++c)
-            system.velocity[c].local_element(i) = corrected[c];
-        }
+      {
+        // The work of the impulse m (v_corrected - v) of a prescribed
+        // velocity (the reaction for the nodal updates that do not solve
+        // for accelerations).
+        double work = 0.;
+        for (unsigned int k = 0; k < condition.functions.size(); ++k)
+          {
+            const unsigned int i = condition.functions[k];
+            const double       m = system.lumped_mass.local_element(i);
+            if (!(m > 0.))
+              continue;
+            Tensor<1, dim> v;
+            for (unsigned int c = 0; c < dim; ++c)
+              v[c] = system.velocity[c].local_element(i);
+            Tensor<1, dim> corrected;
+            if (condition.type != Type::friction)
+              corrected = corrected_velocity(condition, v, time);
+            else if (condition.in_contact[k])
+              corrected = v - (v * condition.normal) * condition.normal;
+            else
+              corrected = v;
+            if (condition.type == Type::velocity)
+              work += m * ((corrected - v) * corrected);
+            for (unsigned int c = 0; c < dim; ++c)
+              system.velocity[c].local_element(i) = corrected[c];
+          }
+        work_of_prescribed_velocities += std::max(work, 0.);
+      }
+  }
+
+
+
+  template <int dim>
+  double
+  BoundaryConditions<dim>::take_work_of_prescribed_velocities()
+  {
+    const double work             = work_of_prescribed_velocities;
+    work_of_prescribed_velocities = 0.;
+    return work;
   }
 
 

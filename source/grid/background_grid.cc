@@ -7,12 +7,17 @@
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_tools.h>
 
+#include <mpm_otm/base/collective_error.h>
 #include <mpm_otm/grid/background_grid.h>
 #include <mpm_otm/grid/gmsh_file.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <iomanip>
 #include <limits>
+#include <sstream>
 
 namespace MpmOtm
 {
@@ -161,6 +166,7 @@ namespace MpmOtm
         create_from_file(communicator);
         return;
       }
+    check_memory(communicator);
     const bool distributed = (dim > 1 && !simplex);
     if (distributed)
       tria = std::make_unique<parallel::distributed::Triangulation<dim>>(
@@ -252,6 +258,59 @@ namespace MpmOtm
         (void)communicator;
         AssertThrow(false, ExcInternalError());
       }
+  }
+
+
+
+  template <int dim>
+  void
+  BackgroundGrid<dim>::check_memory(const MPI_Comm communicator) const
+  {
+    // A lower bound of the bytes per cell: deal.II 9.4 with p4est takes
+    // 850 per quadrilateral and 2000 per hexahedron (doc/performance.md,
+    // "Memory"); the bound for a line is a guess.
+    const double bytes_per_cell[] = {0., 200., 800., 1800.};
+    double       n_cells          = 1.;
+    for (unsigned int d = 0; d < dim; ++d)
+      n_cells *= blocks[d];
+    if (simplex)
+      n_cells *= (dim == 2 ? 4. : 5.);
+    const double needed = bytes_per_cell[dim] * n_cells;
+
+    double        available = 0.;
+    std::ifstream meminfo("/proc/meminfo");
+    for (std::string line; std::getline(meminfo, line);)
+      if (line.rfind("MemAvailable:", 0) == 0)
+        available = 1024. * std::strtod(line.c_str() + 13, nullptr);
+
+    MPI_Comm node;
+    MPI_Comm_split_type(communicator,
+                        MPI_COMM_TYPE_SHARED,
+                        0,
+                        MPI_INFO_NULL,
+                        &node);
+    const unsigned int ranks_on_node = Utilities::MPI::n_mpi_processes(node);
+    const bool         reports = (Utilities::MPI::this_mpi_process(node) == 0);
+    MPI_Comm_free(&node);
+
+    // One rank per node says it.
+    std::string problem;
+    if (reports && available > 0. && needed * ranks_on_node > available)
+      {
+        std::ostringstream message;
+        message << std::setprecision(3) << "Mesh/Subdivisions: the grid of "
+                << n_cells << " cells needs at least " << needed / 1e9
+                << " GB on every MPI rank (each holds all cells of the "
+                << "coarse mesh), " << needed * ranks_on_node / 1e9
+                << " GB for the " << ranks_on_node
+                << " rank(s) on this node, which has " << available / 1e9
+                << " GB available (MemAvailable in /proc/meminfo). ";
+        problem = message.str();
+      }
+    stop_if_any_rank_failed(communicator,
+                            problem,
+                            "",
+                            "Use fewer Subdivisions, or fewer ranks per node.");
   }
 
 

@@ -93,6 +93,8 @@ namespace MpmOtm
         force[c]    = 0.;
       }
     particle_mass.resize(shape_data.n_particles());
+    external_power                 = 0.;
+    external_force_squared_by_mass = 0.;
 
     std::vector<Tensor<1, dim>> traction(2 * dim);
     for (const auto id : problem.traction_boundaries())
@@ -131,6 +133,9 @@ namespace MpmOtm
           external += properties[Layout::traction_measure] *
                       traction[static_cast<unsigned int>(
                         properties[Layout::traction_boundary])];
+        external_power += external * v;
+        if (m > 0.)
+          external_force_squared_by_mass += external.norm_square() / m;
 
         for (unsigned int e = shape_data.offsets[k];
              e < shape_data.offsets[k + 1];
@@ -311,6 +316,24 @@ namespace MpmOtm
     Assert(track_material_boundary,
            ExcMessage("setup() did not ask for the material boundary."));
     return material_boundary;
+  }
+
+
+
+  template <int dim>
+  double
+  NodalSystem<dim>::external_work(const double dt) const
+  {
+    return dt * external_power + 0.5 * dt * dt * external_force_squared_by_mass;
+  }
+
+
+
+  template <int dim>
+  void
+  NodalSystem<dim>::add_external_power(const double power)
+  {
+    external_power += power;
   }
 
 

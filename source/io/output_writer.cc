@@ -424,7 +424,7 @@ namespace MpmOtm
           for (const std::string quantity : {"force", "displacement"})
             for (unsigned int d = 0; d < dim; ++d)
               statistics << ',' << name << '_' << quantity << '_' << "xyz"[d];
-        statistics << '\n';
+        statistics << ",supplied_work\n";
         statistics.close();
         if (!statistics)
           problem = "Could not write <" + name +
@@ -652,7 +652,7 @@ namespace MpmOtm
         for (unsigned int d = 0; d < dim; ++d)
           file << ',' << displacement[d];
       }
-    file << '\n';
+    file << ',' << statistics.supplied_work << '\n';
     file.close();
     return file ? std::string() :
                   "Could not write <" + name +

@@ -195,14 +195,18 @@ namespace MpmOtm
   MaterialPoints<dim>::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Particles");
+    // 12 in 1D is the default benchmark's (B1b); 2 x 2 or 2 x 2 x 2 per
+    // cell is the common choice of MPM codes and of G1-G4.
     prm.declare_entry("Particles per cell",
-                      "12",
+                      dim == 1 ? "12" : "2",
                       Patterns::List(Patterns::Integer(1)),
                       "Material points per direction in each block of the "
                       "background grid (a cell for hypercubes, a block of "
                       "four triangles for simplices), placed at the centres "
                       "of a regular subdivision of the block. One value for "
-                      "all directions or one per direction, e.g. '16, 14'.");
+                      "all directions or one per direction, e.g. '16, 14'. "
+                      "Default: 12 in 1D (benchmark B1b), 2 in 2D and 3D "
+                      "(4 or 8 points per cell).");
     prm.leave_subsection();
   }
 

@@ -2,6 +2,7 @@
 
 #include <mpm_otm/algorithms/advected_grid.h>
 #include <mpm_otm/algorithms/advected_knots.h>
+#include <mpm_otm/algorithms/energy_monitor.h>
 #include <mpm_otm/algorithms/fixed_grid.h>
 #include <mpm_otm/algorithms/nodal_update.h>
 #include <mpm_otm/algorithms/optimal_transportation_update.h>
@@ -172,6 +173,16 @@ namespace MpmOtm
       "With Time step = auto, the fraction of the stable time step "
       "2 / omega_max used, in (0, 1]. Large deformations change the "
       "stable time step during a run, so keep a margin.");
+    prm.declare_entry(
+      "Energy growth limit",
+      "1",
+      Patterns::Double(0.),
+      "Stop the run as unstable when the kinetic plus strain energy of the "
+      "points exceeds (1 + this) times the energy supplied: the energy at "
+      "the start plus the work of gravity, body forces, tractions and "
+      "prescribed velocities. Checked every 10 steps and at every output. "
+      "A stable run errs on this balance by a few per cent; an unstable one "
+      "gains energy by a fixed factor per step (manual, 'Safety').");
     prm.leave_subsection();
 
     BackgroundGrid<dim>::declare_parameters(prm);
@@ -272,6 +283,7 @@ namespace MpmOtm
     const std::string step_entry = prm.get("Time step");
     automatic_time_step          = (step_entry == "auto");
     courant_factor               = prm.get_double("Courant factor");
+    energy_growth_limit          = prm.get_double("Energy growth limit");
     prm.leave_subsection();
     if (!automatic_time_step)
       {
@@ -535,6 +547,8 @@ namespace MpmOtm
                            *materials,
                            *problem_description,
                            current_time);
+        statistics.supplied_work =
+          Utilities::MPI::sum(stepper.supplied_work(), communicator);
         statistics.boundary_names = boundary_conditions->names();
         statistics.boundary_reactions =
           boundary_conditions->reactions_and_displacements();
@@ -545,16 +559,28 @@ namespace MpmOtm
                       *shape_functions,
                       *system,
                       statistics);
-        pcout << "step " << std::setw(7) << step << "  t = " << std::scientific
-              << std::setprecision(4) << current_time
+        const double elapsed = wall_clock.wall_time();
+        pcout << "step " << std::setw(7) << step << " of " << n_steps
+              << "  t = " << std::scientific << std::setprecision(4)
+              << current_time
               << "  kinetic energy = " << statistics.kinetic_energy
               << "  wall time = " << std::fixed << std::setprecision(2)
-              << wall_clock.wall_time() << " s" << std::defaultfloat
-              << std::endl;
+              << elapsed << " s";
+        if (step > 0 && step < n_steps)
+          {
+            const double remaining = elapsed * (n_steps - step) / step;
+            pcout << ", about " << std::setprecision(remaining < 10. ? 1 : 0)
+                  << remaining << " s to go";
+          }
+        pcout << std::defaultfloat << std::setprecision(6) << std::endl;
         if (observer)
           observer(step, statistics);
       };
 
+      EnergyMonitor<dim> energy_monitor(energy_growth_limit,
+                                        grid->minimal_cell_size() / time_step,
+                                        communicator);
+      energy_monitor.check(*points, *materials, stepper.supplied_work());
       report(0);
       for (unsigned int step = 1; step <= n_steps; ++step)
         {
@@ -562,6 +588,11 @@ namespace MpmOtm
           try
             {
               stepper.advance(current_time, dt);
+              if (step % 10 == 0 ||
+                  output->is_output_step(step, step == n_steps))
+                energy_monitor.check(*points,
+                                     *materials,
+                                     stepper.supplied_work());
             }
           catch (const std::exception &error)
             {

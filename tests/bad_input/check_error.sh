@@ -2,8 +2,9 @@
 # Run mpm-otm on a bad parameter file and require a non-zero exit and an
 # error message matching a regular expression.
 # Usage: check_error.sh <mpm-otm> <parameter file> <regex> [file that must exist afterwards]
-# --overwrite: the tests rerun into the same directories.
-output=$("$1" --overwrite "$2" 2>&1)
+# --overwrite: the tests rerun into the same directories. LAUNCHER (e.g.
+# "mpirun -np 2"), if set, runs the executable.
+output=$($LAUNCHER "$1" --overwrite "$2" 2>&1)
 status=$?
 if [ $status -eq 0 ]; then
   echo "expected a non-zero exit status, got 0"; echo "$output"; exit 1

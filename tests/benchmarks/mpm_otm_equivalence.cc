@@ -20,6 +20,7 @@
 #include <mpm_otm/grid_system/nodal_system.h>
 #include <mpm_otm/shape_functions/shape_functions.h>
 
+#include <algorithm>
 #include <fstream>
 
 #include "../tests.h"
@@ -88,10 +89,13 @@ namespace
     std::string         line;
     std::vector<double> errors;
     std::getline(file, line);
-    check(line.substr(line.rfind(',') + 1) == "stress_rms_error",
-          "unexpected statistics.csv header " + line);
+    const auto header = Utilities::split_string_list(line);
+    const auto column =
+      std::find(header.begin(), header.end(), "stress_rms_error");
+    check(column != header.end(), "no stress_rms_error in " + line);
     while (std::getline(file, line))
-      errors.push_back(std::stod(line.substr(line.rfind(',') + 1)));
+      errors.push_back(std::stod(
+        Utilities::split_string_list(line)[column - header.begin()]));
     return errors;
   }
 } // namespace

@@ -68,6 +68,14 @@ namespace MpmOtm
     void
     advance(const double time, const double dt);
 
+    /**
+     * The work done on this rank's points and nodes by gravity, body
+     * forces, tractions and prescribed velocities since the start (the
+     * positive part of each step's work), for the EnergyMonitor.
+     */
+    double
+    supplied_work() const;
+
   private:
     void
     advance_particle_velocities(const double dt);
@@ -92,6 +100,11 @@ namespace MpmOtm
      * Length of the previous step (0 before the first).
      */
     double previous_dt = 0.;
+
+    /**
+     * See supplied_work().
+     */
+    double work_supplied = 0.;
   };
 } // namespace MpmOtm
 

@@ -126,7 +126,15 @@ namespace MpmOtm
      * (locally owned entries of system.velocity) at time @p time.
      */
     void
-    constrain_velocities(NodalSystem<dim> &system, const double time) const;
+    constrain_velocities(NodalSystem<dim> &system, const double time);
+
+    /**
+     * The work done by the prescribed velocities on this rank's nodes since
+     * the last call (the positive part of each step's work: the impulse of
+     * the reaction times the prescribed velocity). Resets it.
+     */
+    double
+    take_work_of_prescribed_velocities();
 
     /**
      * The names of the conditions.
@@ -198,9 +206,10 @@ namespace MpmOtm
     find_box_functions(Condition &condition) const;
 
     std::vector<Condition>     conditions;
-    MPI_Comm                   communicator    = MPI_COMM_WORLD;
-    const ShapeFunctions<dim> *functions       = nullptr;
-    const BackgroundGrid<dim> *background_grid = nullptr;
+    double                     work_of_prescribed_velocities = 0.;
+    MPI_Comm                   communicator                  = MPI_COMM_WORLD;
+    const ShapeFunctions<dim> *functions                     = nullptr;
+    const BackgroundGrid<dim> *background_grid               = nullptr;
   };
 } // namespace MpmOtm
 

@@ -143,6 +143,15 @@ namespace MpmOtm
     void
     create_simplex_blocks_2d();
 
+    /**
+     * Stop, on every rank and before the triangulation is allocated, if
+     * the cells of the box grid need more memory than the node has
+     * available for its ranks: each rank holds every cell of the coarse
+     * mesh. Collective; does nothing where /proc/meminfo is missing.
+     */
+    void
+    check_memory(const MPI_Comm communicator) const;
+
     void
     set_boundary_ids();
 

@@ -119,6 +119,24 @@ namespace MpmOtm
     const std::vector<unsigned int> &
     material_boundary_functions() const;
 
+    /**
+     * Work done in a step of length @p dt by the external forces on this
+     * rank's points (gravity, body force, tractions on points) and on the
+     * grid (tractions added to #force with add_external_power()), from the
+     * power P at the start of the step and the kinetic energy
+     * dt^2 |f_p|^2 / 2 m_p the point forces alone add: dt P + dt^2 sum_p
+     * |f_p|^2 / 2 m_p, exact for a body in free fall.
+     */
+    double
+    external_work(const double dt) const;
+
+    /**
+     * Add @p power to the power of the external forces of this step (for
+     * loads assembled directly on the grid).
+     */
+    void
+    add_external_power(const double power);
+
     /// Lumped nodal masses.
     VectorType lumped_mass;
     /// Nodal momenta q_k.
@@ -148,7 +166,11 @@ namespace MpmOtm
     /// Diagonal of the consistent mass matrix (only with a threshold).
     VectorType                diagonal_mass;
     std::vector<unsigned int> deactivated;
-    bool                      track_material_boundary = false;
+    /// Power f_p . v_p of the external forces at the start of the step and
+    /// sum_p |f_p|^2 / m_p of the points on this rank.
+    double external_power                 = 0.;
+    double external_force_squared_by_mass = 0.;
+    bool   track_material_boundary        = false;
     /// Cells with and without material next to each function.
     VectorType                           filled_cells, empty_cells;
     std::vector<unsigned int>            material_boundary;

@@ -39,6 +39,11 @@ namespace MpmOtm
     /// Potential energy of the points in the gravity field,
     /// -sum_p m_p g . (x_p - X_p).
     double gravitational_energy = 0;
+    /// Work done on the points since the start by gravity, body forces,
+    /// tractions and prescribed velocities (the positive part of each
+    /// step's work on each rank, TimeStepper::supplied_work()); with the
+    /// energy at the start, the bound of the EnergyMonitor.
+    double supplied_work = 0;
     /// Names of the named boundary conditions.
     std::vector<std::string> boundary_names;
     /// Their reactions (mean over the steps since the last output) and the

@@ -163,6 +163,8 @@ namespace MpmOtm
     /// Time step = auto: Courant factor x the stable time step.
     bool   automatic_time_step = false;
     double courant_factor      = 0.5;
+    /// Allowed gain of energy over the energy supplied (EnergyMonitor).
+    double energy_growth_limit = 1.;
     /// The stable time step found at the start.
     double stable_step  = 0;
     double current_time = 0;
