@@ -10,6 +10,7 @@
 #include <mpm_otm/algorithms/time_stepper.h>
 #include <mpm_otm/base/collective_error.h>
 #include <mpm_otm/base/plugins.h>
+#include <mpm_otm/base/stop_signal.h>
 #include <mpm_otm/boundary_conditions/boundary_conditions.h>
 #include <mpm_otm/grid/background_grid.h>
 #include <mpm_otm/grid_system/local_damping.h>
@@ -582,6 +583,10 @@ namespace MpmOtm
                                         communicator);
       energy_monitor.check(*points, *materials, stepper.supplied_work());
       report(0);
+      // SIGTERM or SIGINT ends the run after a complete step, with its
+      // output; the ranks agree on it where they check the energy.
+      const StopSignal stop_signal;
+      std::string      signal;
       for (unsigned int step = 1; step <= n_steps; ++step)
         {
           const double dt = std::min(time_step, end_time - current_time);
@@ -590,9 +595,12 @@ namespace MpmOtm
               stepper.advance(current_time, dt);
               if (step % 10 == 0 ||
                   output->is_output_step(step, step == n_steps))
-                energy_monitor.check(*points,
-                                     *materials,
-                                     stepper.supplied_work());
+                {
+                  energy_monitor.check(*points,
+                                       *materials,
+                                       stepper.supplied_work());
+                  signal = stop_signal.received(communicator);
+                }
             }
           catch (const std::exception &error)
             {
@@ -606,8 +614,20 @@ namespace MpmOtm
               break;
             }
           current_time = (step == n_steps) ? end_time : current_time + dt;
-          if (output->is_output_step(step, step == n_steps))
+          if (output->is_output_step(step, step == n_steps) || !signal.empty())
             report(step);
+          if (!signal.empty() && step < n_steps)
+            {
+              std::ostringstream message;
+              message << "Stopped by " << signal << " after time step " << step
+                      << " (t = " << current_time
+                      << "); the output of this step and of the output steps "
+                      << "before it is in <" << output->directory()
+                      << ">. There is no checkpoint to resume from yet.";
+              stop_message = message.str();
+              timer.disable_output();
+              break;
+            }
         }
     }
     AssertThrow(stop_message.empty(), ExcMessage(stop_message));
