@@ -94,8 +94,8 @@ namespace
       std::find(header.begin(), header.end(), "stress_rms_error");
     check(column != header.end(), "no stress_rms_error in " + line);
     while (std::getline(file, line))
-      errors.push_back(std::stod(
-        Utilities::split_string_list(line)[column - header.begin()]));
+      errors.push_back(
+        std::stod(Utilities::split_string_list(line)[column - header.begin()]));
     return errors;
   }
 } // namespace

@@ -9,6 +9,7 @@ exe=$1
 prm=$2
 kills=${3:-4}
 directory=output-kill
+. "$(dirname "$0")/start_run.sh"
 
 # complete FILE: FILE exists and ends with the closing tag of a VTK file.
 complete() {
@@ -37,19 +38,8 @@ for ranks in 1 2; do
   i=0
   while [ $i -lt "$kills" ]; do
     rm -rf $directory
-    if [ $ranks -eq 1 ]; then
-      "$exe" "$prm" > /dev/null 2>&1 &
-    else
-      mpirun -np 2 --oversubscribe "$exe" "$prm" > /dev/null 2>&1 &
-    fi
-    run=$!
-    # Wait for the first output (grid.pvd is written after particles.pvd),
-    # then a random 0-2 s.
-    waited=0
-    until [ -f $directory/grid.pvd ] || [ $waited -ge 600 ]; do
-      sleep 0.1
-      waited=$((waited + 1))
-    done
+    # After the first output, a random 0-2 s.
+    start_run $ranks /dev/null
     sleep "$(awk "BEGIN{srand($$ + $i + 10 * $ranks); printf \"%.2f\", 2 * rand()}")"
     # One process of the run (for two ranks: the first rank found).
     victim=$(pgrep -f "^$exe $prm" | head -n 1)

@@ -8,21 +8,12 @@
 exe=$1
 prm=$2
 directory=output-sigterm
+. "$(dirname "$0")/start_run.sh"
 
 for ranks in 1 2; do
   rm -rf $directory log
-  if [ $ranks -eq 1 ]; then
-    "$exe" "$prm" > log 2>&1 &
-  else
-    mpirun -np 2 --oversubscribe "$exe" "$prm" > log 2>&1 &
-  fi
-  run=$!
-  # Wait for the first output, then let the run go on for a second.
-  waited=0
-  until [ -f $directory/grid.pvd ] || [ $waited -ge 600 ]; do
-    sleep 0.1
-    waited=$((waited + 1))
-  done
+  # After the first output, let the run go on for a second.
+  start_run $ranks log
   sleep 1
   kill -TERM $run
   wait $run
