@@ -15,11 +15,15 @@ namespace
 {
   /**
    * Read @p filename (empty: the defaults, i.e. the default benchmark) and
-   * run the simulation in @p dim dimensions.
+   * run the simulation in @p dim dimensions. A non-empty @p resume_directory
+   * is the output directory of a run to continue from its newest
+   * checkpoint; @p filename is then its parameters.prm.
    */
   template <int dim>
   void
-  run(const std::string &filename, const bool overwrite)
+  run(const std::string &filename,
+      const bool         overwrite,
+      const std::string &resume_directory)
   {
     std::string text;
     if (!filename.empty())
@@ -90,9 +94,16 @@ namespace
         prm.set("Overwrite", true);
         prm.leave_subsection();
       }
+    if (!resume_directory.empty())
+      {
+        // The directory may have moved since the run wrote its parameters.
+        prm.enter_subsection("Output");
+        prm.set("Directory", resume_directory);
+        prm.leave_subsection();
+      }
     MpmOtm::Simulator<dim> simulator(MPI_COMM_WORLD, std::cout);
     simulator.parse_parameters(prm);
-    simulator.setup(prm);
+    simulator.setup(prm, !resume_directory.empty());
     simulator.run();
   }
 
@@ -140,17 +151,40 @@ main(int argc, char *argv[])
     {
       const std::string usage =
         "Usage: mpm-otm [--overwrite] [parameter file]\n"
+        "       mpm-otm --resume OUTPUT-DIRECTORY\n"
         "       mpm-otm --print-parameters 1|2|3\n"
         "       mpm-otm --help\n"
         "Without a file the default benchmark (B1b, 1D vibrating bar, MPM) "
         "runs. --overwrite lets the run replace another run's output in its "
-        "Output/Directory.\n";
+        "Output/Directory. --resume continues the run whose output is in "
+        "OUTPUT-DIRECTORY from its newest checkpoint, with the parameters "
+        "of its parameters.prm, on any number of MPI ranks.\n";
       std::vector<std::string> arguments(argv + 1, argv + argc);
       const auto               overwrite_option =
         std::find(arguments.begin(), arguments.end(), "--overwrite");
       const bool overwrite = overwrite_option != arguments.end();
       if (overwrite)
         arguments.erase(overwrite_option);
+      std::string resume_directory;
+      const auto  resume_option =
+        std::find(arguments.begin(), arguments.end(), "--resume");
+      if (resume_option != arguments.end())
+        {
+          AssertThrow(arguments.size() == 2 &&
+                        resume_option == arguments.begin() && !overwrite,
+                      dealii::ExcMessage(
+                        "--resume needs the output directory of the run to "
+                        "continue, and nothing else.\n" +
+                        usage));
+          resume_directory = arguments[1];
+          AssertThrow(
+            std::ifstream(resume_directory + "/parameters.prm").good(),
+            dealii::ExcMessage("--resume: <" + resume_directory +
+                               "> holds no parameters.prm; give the Output/"
+                               "Directory of the run to continue.\n" +
+                               usage));
+          arguments = {resume_directory + "/parameters.prm"};
+        }
       const std::string argument = arguments.empty() ? "" : arguments[0];
       if (argument == "--help" || argument == "-h")
         {
@@ -203,13 +237,13 @@ main(int argc, char *argv[])
       switch (MpmOtm::read_dimension(argument))
         {
           case 1:
-            run<1>(argument, overwrite);
+            run<1>(argument, overwrite, resume_directory);
             break;
           case 2:
-            run<2>(argument, overwrite);
+            run<2>(argument, overwrite, resume_directory);
             break;
           default:
-            run<3>(argument, overwrite);
+            run<3>(argument, overwrite, resume_directory);
             break;
         }
     }

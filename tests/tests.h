@@ -78,7 +78,8 @@ namespace MpmOtmTests
   make_simulator(const std::string &name,
                  const std::string &changes,
                  const std::string &directory,
-                 const MPI_Comm     communicator = MPI_COMM_WORLD)
+                 const MPI_Comm     communicator = MPI_COMM_WORLD,
+                 const bool         resume       = false)
   {
     static std::ostringstream quiet;
     std::string               text;
@@ -105,7 +106,7 @@ namespace MpmOtmTests
     auto simulator =
       std::make_unique<MpmOtm::Simulator<dim>>(communicator, quiet);
     simulator->parse_parameters(prm);
-    simulator->setup(prm);
+    simulator->setup(prm, resume);
     return simulator;
   }
 

@@ -119,6 +119,7 @@ namespace MpmOtm
     std::vector<unsigned int> position_of_vertex(triangulation->n_vertices(),
                                                  numbers::invalid_unsigned_int);
     vertex_positions.clear();
+    vertex_indices.clear();
     vertex_functions.clear();
     owned_cell_vertices.clear();
     owned_cells.clear();
@@ -136,6 +137,7 @@ namespace MpmOtm
               {
                 position = vertex_positions.size();
                 vertex_positions.push_back(&cell->vertex(v));
+                vertex_indices.push_back(cell->vertex_index(v));
                 const types::global_dof_index function =
                   shape_functions.vertex_function(cell, v);
                 AssertThrow(function != numbers::invalid_dof_index,
@@ -280,6 +282,55 @@ namespace MpmOtm
 
     for (unsigned int k = 0; k < vertex_positions.size(); ++k)
       *vertex_positions[k] = moved_positions[k];
+    triangulation->signals.mesh_movement();
+  }
+
+
+
+  template <int dim>
+  void
+  AdvectedGrid<dim>::save(CheckpointState &state) const
+  {
+    // This rank's vertices with their indices in the triangulation, which
+    // are the same on every rank (the grid is a coarse mesh).
+    std::vector<double> vertices;
+    vertices.reserve(vertex_positions.size() * (dim + 1));
+    for (unsigned int k = 0; k < vertex_positions.size(); ++k)
+      {
+        vertices.push_back(vertex_indices[k]);
+        for (unsigned int d = 0; d < dim; ++d)
+          vertices.push_back((*vertex_positions[k])[d]);
+      }
+    state.set_own("moving grid/vertices", vertices);
+  }
+
+
+
+  template <int dim>
+  void
+  AdvectedGrid<dim>::load(const CheckpointState &state)
+  {
+    std::vector<Point<dim>> saved(triangulation->n_vertices());
+    std::vector<bool>       found(triangulation->n_vertices(), false);
+    for (const auto &part : state.parts("moving grid/vertices"))
+      for (unsigned int k = 0; k + dim < part.size(); k += dim + 1)
+        {
+          const auto index = static_cast<unsigned int>(part[k]);
+          AssertThrow(index < saved.size(),
+                      ExcMessage("The checkpoint's grid has more vertices "
+                                 "than this run's."));
+          for (unsigned int d = 0; d < dim; ++d)
+            saved[index][d] = part[k + 1 + d];
+          found[index] = true;
+        }
+    for (unsigned int k = 0; k < vertex_positions.size(); ++k)
+      {
+        AssertThrow(found[vertex_indices[k]],
+                    ExcMessage("The checkpoint lacks vertex " +
+                               std::to_string(vertex_indices[k]) +
+                               " of the moving grid."));
+        *vertex_positions[k] = saved[vertex_indices[k]];
+      }
     triangulation->signals.mesh_movement();
   }
 

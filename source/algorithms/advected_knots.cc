@@ -240,6 +240,38 @@ namespace MpmOtm
 
 
 
+  template <int dim>
+  void
+  AdvectedKnots<dim>::save(CheckpointState &state) const
+  {
+    for (unsigned int d = 0; d < dim; ++d)
+      state.set_shared("moving knots/direction " + std::to_string(d),
+                       splines.breakpoints(d));
+  }
+
+
+
+  template <int dim>
+  void
+  AdvectedKnots<dim>::load(const CheckpointState &state)
+  {
+    std::array<std::vector<double>, dim> saved;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        saved[d] = state.shared("moving knots/direction " + std::to_string(d));
+        AssertThrow(saved[d].size() == splines.breakpoints(d).size(),
+                    ExcMessage("The checkpoint's knots do not fit this "
+                               "run's grid."));
+      }
+    for (unsigned int k = 0; k < vertices.size(); ++k)
+      for (unsigned int d = 0; d < dim; ++d)
+        (*vertices[k])[d] = saved[d][knot_of_vertex[k][d]];
+    triangulation->signals.mesh_movement();
+    splines.move_breakpoints(saved);
+  }
+
+
+
   template class AdvectedKnots<1>;
   template class AdvectedKnots<2>;
   template class AdvectedKnots<3>;

@@ -80,6 +80,30 @@ namespace MpmOtm
 
 
 
+  template <int dim>
+  void
+  EnergyMonitor<dim>::save(CheckpointState &state) const
+  {
+    state.set_shared("energy monitor/reference",
+                     {started ? 1. : 0., initial_energy, energy_floor});
+  }
+
+
+
+  template <int dim>
+  void
+  EnergyMonitor<dim>::load(const CheckpointState &state)
+  {
+    const auto &saved = state.shared("energy monitor/reference");
+    AssertThrow(saved.size() == 3,
+                ExcMessage("The checkpoint's energy reference is damaged."));
+    started        = saved[0] != 0.;
+    initial_energy = saved[1];
+    energy_floor   = saved[2];
+  }
+
+
+
   template class EnergyMonitor<1>;
   template class EnergyMonitor<2>;
   template class EnergyMonitor<3>;

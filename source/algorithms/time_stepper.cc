@@ -215,6 +215,26 @@ namespace MpmOtm
 
 
 
+  template <int dim>
+  void
+  TimeStepper<dim>::save(CheckpointState &state) const
+  {
+    state.set_shared("time stepper/previous time step", {previous_dt});
+    state.set_own("time stepper/supplied work", {work_supplied});
+  }
+
+
+
+  template <int dim>
+  void
+  TimeStepper<dim>::load(const CheckpointState &state)
+  {
+    previous_dt   = state.shared("time stepper/previous time step").at(0);
+    work_supplied = state.share_of_sums("time stepper/supplied work").at(0);
+  }
+
+
+
   template class TimeStepper<1>;
   template class TimeStepper<2>;
   template class TimeStepper<3>;

@@ -602,6 +602,57 @@ namespace MpmOtm
 
 
 
+  template <int dim>
+  void
+  BoundaryConditions<dim>::save(CheckpointState &state) const
+  {
+    // Shared: per condition the number of steps summed and the
+    // displacement; own: per condition this rank's reaction sum, then the
+    // work not yet taken.
+    std::vector<double> shared, own;
+    for (const auto &condition : conditions)
+      {
+        shared.push_back(condition.n_steps);
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            shared.push_back(condition.displacement[d]);
+            own.push_back(condition.reaction_sum[d]);
+          }
+      }
+    own.push_back(work_of_prescribed_velocities);
+    state.set_shared("boundary conditions/steps and displacements", shared);
+    state.set_own("boundary conditions/reactions and work", own);
+  }
+
+
+
+  template <int dim>
+  void
+  BoundaryConditions<dim>::load(const CheckpointState &state)
+  {
+    const auto &shared =
+      state.shared("boundary conditions/steps and displacements");
+    const auto own =
+      state.share_of_sums("boundary conditions/reactions and work");
+    AssertThrow(shared.size() == conditions.size() * (dim + 1) &&
+                  own.size() == conditions.size() * dim + 1,
+                ExcMessage("The checkpoint's boundary conditions are not "
+                           "those of this run (Boundaries)."));
+    for (unsigned int b = 0; b < conditions.size(); ++b)
+      {
+        conditions[b].n_steps =
+          static_cast<unsigned int>(shared[b * (dim + 1)]);
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            conditions[b].displacement[d] = shared[b * (dim + 1) + 1 + d];
+            conditions[b].reaction_sum[d] = own[b * dim + d];
+          }
+      }
+    work_of_prescribed_velocities = own.back();
+  }
+
+
+
   template class BoundaryConditions<1>;
   template class BoundaryConditions<2>;
   template class BoundaryConditions<3>;

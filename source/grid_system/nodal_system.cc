@@ -338,6 +338,53 @@ namespace MpmOtm
 
 
 
+  template <int dim>
+  void
+  NodalSystem<dim>::save(CheckpointState &state) const
+  {
+    // Per owned function: its global index, then the accelerations and the
+    // velocities of its components.
+    std::vector<double> values;
+    const auto         &owned = index_partition->locally_owned_range();
+    values.reserve(owned.n_elements() * (2 * dim + 1));
+    unsigned int local = 0;
+    for (const auto index : owned)
+      {
+        values.push_back(index);
+        for (unsigned int c = 0; c < dim; ++c)
+          values.push_back(acceleration[c].local_element(local));
+        for (unsigned int c = 0; c < dim; ++c)
+          values.push_back(velocity[c].local_element(local));
+        ++local;
+      }
+    state.set_own("nodal system/accelerations and velocities", values);
+  }
+
+
+
+  template <int dim>
+  void
+  NodalSystem<dim>::load(const CheckpointState &state)
+  {
+    const auto &owned = index_partition->locally_owned_range();
+    for (const auto &part :
+         state.parts("nodal system/accelerations and velocities"))
+      for (unsigned int k = 0; k + 2 * dim < part.size(); k += 2 * dim + 1)
+        {
+          const auto index = static_cast<types::global_dof_index>(part[k]);
+          if (!owned.is_element(index))
+            continue;
+          const unsigned int local = owned.index_within_set(index);
+          for (unsigned int c = 0; c < dim; ++c)
+            {
+              acceleration[c].local_element(local) = part[k + 1 + c];
+              velocity[c].local_element(local)     = part[k + 1 + dim + c];
+            }
+        }
+  }
+
+
+
   template class NodalSystem<1>;
   template class NodalSystem<2>;
   template class NodalSystem<3>;

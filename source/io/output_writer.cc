@@ -5,6 +5,7 @@
 #include <mpm_otm/base/collective_error.h>
 #include <mpm_otm/grid/background_grid.h>
 #include <mpm_otm/grid_system/nodal_system.h>
+#include <mpm_otm/io/output_directory.h>
 #include <mpm_otm/io/output_writer.h>
 #include <mpm_otm/material_points/material_points.h>
 #include <mpm_otm/materials/material_library.h>
@@ -162,41 +163,13 @@ namespace MpmOtm
 
 
     /**
-     * Write the file @p file_name with @p write under a temporary name and
-     * rename it when it is complete, so that no reader (ParaView, or a look
-     * after a killed run) ever finds a partial file under its name. Returns
-     * an empty string, or, if a write failed (e.g. the disk is full), a
-     * sentence naming the file.
-     */
-    std::string
-    write_file_atomically(const std::string                         &file_name,
-                          const std::function<void(std::ostream &)> &write)
-    {
-      const std::string temporary = file_name + ".tmp";
-      std::ofstream     file(temporary);
-      if (file)
-        write(file);
-      file.close();
-      std::error_code error;
-      if (file)
-        std::filesystem::rename(temporary, file_name, error);
-      if (file && !error)
-        return "";
-      const std::string reason =
-        error ? error.message() : std::string(std::strerror(errno));
-      std::filesystem::remove(temporary, error);
-      return "Could not write <" + file_name + ">: " + reason + ". ";
-    }
-
-
-
-    /**
      * Write step @p step of the time series @p name (particles or grid) to
      * @p directory: every rank its piece NAME_NNNNN.R.vtu of @p patches;
      * then, once every piece is complete, rank 0 the index NAME_NNNNN.pvtu
      * and the time series NAME.pvd of @p records, to which the step is
-     * added at @p time. Each file is written with write_file_atomically(); a
-     * failed write stops all ranks, naming the file. Collective.
+     * added at @p time. Each file is written with
+     * OutputDirectory::write_file_atomically(); a failed write stops all ranks,
+     * naming the file. Collective.
      */
     template <int patch_dim, int dim>
     void
@@ -218,14 +191,14 @@ namespace MpmOtm
       };
       const std::string advice =
         "Free space on the disk of Output/Directory or choose another one.";
-      stop_if_any_rank_failed(communicator,
-                              write_file_atomically(directory + "/" +
-                                                      piece(rank),
-                                                    [&](std::ostream &out) {
-                                                      patches.write_vtu(out);
-                                                    }),
-                              "",
-                              advice);
+      stop_if_any_rank_failed(
+        communicator,
+        OutputDirectory::write_file_atomically(directory + "/" + piece(rank),
+                                               [&](std::ostream &out) {
+                                                 patches.write_vtu(out);
+                                               }),
+        "",
+        advice);
 
       const std::string index = base + ".pvtu";
       records.emplace_back(time, index);
@@ -235,18 +208,17 @@ namespace MpmOtm
           std::vector<std::string> pieces;
           for (unsigned int r = 0; r < n_ranks; ++r)
             pieces.push_back(piece(r));
-          problem =
-            write_file_atomically(directory + "/" + index,
-                                  [&](std::ostream &out) {
-                                    patches.write_pvtu_record(out, pieces);
-                                  });
+          problem = OutputDirectory::write_file_atomically(
+            directory + "/" + index,
+            [&](std::ostream &out) {
+              patches.write_pvtu_record(out, pieces);
+            });
           if (problem.empty())
-            problem =
-              write_file_atomically(directory + "/" + name + ".pvd",
-                                    [&](std::ostream &out) {
-                                      DataOutBase::write_pvd_record(out,
-                                                                    records);
-                                    });
+            problem = OutputDirectory::write_file_atomically(
+              directory + "/" + name + ".pvd",
+              [&](std::ostream &out) {
+                DataOutBase::write_pvd_record(out, records);
+              });
         }
       stop_if_any_rank_failed(communicator, problem, "", advice);
     }
@@ -321,60 +293,6 @@ namespace MpmOtm
 
 
   template <int dim>
-  std::string
-  OutputWriter<dim>::clear_previous_output() const
-  {
-    namespace fs = std::filesystem;
-    std::error_code error;
-    if (!fs::is_directory(output_directory, error))
-      return "";
-    std::vector<std::string> found;
-    for (const std::string name :
-         {"statistics.csv", "parameters.prm", "particles.pvd", "grid.pvd"})
-      if (fs::exists(fs::symlink_status(output_directory + "/" + name, error)))
-        found.push_back(name);
-    if (found.empty())
-      return "";
-    if (!overwrite)
-      {
-        std::string names;
-        for (const auto &name : found)
-          names += (names.empty() ? "" : ", ") + name;
-        return "Output/Directory: <" + output_directory +
-               "> holds the output of another run (" + names +
-               "). Choose another Output/Directory, remove that one, or let "
-               "this run replace it: set Output/Overwrite = true or run "
-               "mpm-otm --overwrite FILE.";
-      }
-    // The step files of the earlier run, which a shorter run would leave
-    // beside its own; nothing else in the directory is touched.
-    static const std::regex step_file(
-      "(particles-[0-9]+\\.csv|(particles|grid)_[0-9]+(\\.[0-9]+)?"
-      "\\.(vtu|pvtu)|(particles|grid)\\.pvd|powell-sabin-basis\\.vtu)");
-    // Non-throwing iteration: an error on rank 0 must reach the other
-    // ranks through the caller's broadcast.
-    std::vector<fs::path> step_files;
-    for (fs::directory_iterator entry(output_directory, error), end;
-         !error && entry != end;
-         entry.increment(error))
-      if (std::regex_match(entry->path().filename().string(), step_file))
-        step_files.push_back(entry->path());
-    if (error)
-      return "Output/Overwrite: cannot list <" + output_directory +
-             ">: " + error.message() + ".";
-    for (const auto &file : step_files)
-      {
-        fs::remove(file, error);
-        if (error)
-          return "Output/Overwrite: cannot remove <" + file.string() +
-                 ">: " + error.message() + ".";
-      }
-    return "";
-  }
-
-
-
-  template <int dim>
   void
   OutputWriter<dim>::initialize(const ParameterHandler &prm,
                                 const bool              has_displacement_error,
@@ -382,30 +300,43 @@ namespace MpmOtm
                                 const MPI_Comm          communicator,
                                 const MaterialLibrary<dim> &material_library,
                                 const std::vector<std::string> &boundary_names,
-                                const bool                      has_gravity)
+                                const bool                      has_gravity,
+                                const unsigned int              resumed_step)
   {
     mpi_communicator           = communicator;
     materials                  = &material_library;
     write_gravitational_energy = has_gravity;
+    if (resumed_step > 0)
+      {
+        std::string problem;
+        if (Utilities::MPI::this_mpi_process(communicator) == 0)
+          problem =
+            OutputDirectory::trim_after_step(output_directory, resumed_step);
+        stop_if_any_rank_failed(communicator,
+                                problem,
+                                "Cannot resume in <" + output_directory + ">: ",
+                                "");
+        return;
+      }
     // Rank 0 creates the directory; every rank learns whether that worked,
     // so that all stop together instead of waiting for rank 0.
     std::string problem;
     if (Utilities::MPI::this_mpi_process(communicator) == 0)
       {
         std::error_code error;
-        problem = clear_previous_output();
+        problem =
+          OutputDirectory::clear_previous_run(output_directory, overwrite);
         if (problem.empty())
           std::filesystem::create_directories(output_directory, error);
         if (problem.empty() && error)
           problem = "Output/Directory: cannot create <" + output_directory +
                     ">: " + error.message() + ".";
         else if (problem.empty())
-          problem =
-            write_file_atomically(output_directory + "/parameters.prm",
-                                  [&](std::ostream &out) {
-                                    prm.print_parameters(out,
-                                                         ParameterHandler::PRM);
-                                  });
+          problem = OutputDirectory::write_file_atomically(
+            output_directory + "/parameters.prm",
+            [&](std::ostream &out) {
+              prm.print_parameters(out, ParameterHandler::PRM);
+            });
       }
     problem = Utilities::MPI::broadcast(communicator, problem, 0);
     AssertThrow(problem.empty(), ExcMessage(problem));
@@ -432,6 +363,62 @@ namespace MpmOtm
       }
     stop_if_any_rank_failed(
       communicator,
+      problem,
+      "",
+      "Free space on the disk of Output/Directory or choose another one.");
+  }
+
+
+
+  template <int dim>
+  void
+  OutputWriter<dim>::save(CheckpointState &state) const
+  {
+    // Time and step of each record; the file names follow from the step.
+    for (const auto &[name, records] :
+         {std::make_pair("particles", &particle_records),
+          std::make_pair("grid", &grid_records)})
+      {
+        std::vector<double> values;
+        for (const auto &[time, file] : *records)
+          {
+            values.push_back(time);
+            values.push_back(std::stoul(file.substr(file.rfind('_') + 1)));
+          }
+        state.set_shared(std::string("output/") + name + " time series",
+                         values);
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  OutputWriter<dim>::load(const CheckpointState &state)
+  {
+    std::string problem;
+    for (const auto &[name, records] :
+         {std::make_pair("particles", &particle_records),
+          std::make_pair("grid", &grid_records)})
+      {
+        const auto &values =
+          state.shared(std::string("output/") + name + " time series");
+        records->clear();
+        for (unsigned int k = 0; k + 1 < values.size(); k += 2)
+          records->emplace_back(
+            values[k],
+            std::string(name) + "_" +
+              step_string(static_cast<unsigned int>(values[k + 1])) + ".pvtu");
+        if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0 &&
+            write_vtu && problem.empty())
+          problem = OutputDirectory::write_file_atomically(
+            output_directory + "/" + name + ".pvd",
+            [&](std::ostream &out) {
+              DataOutBase::write_pvd_record(out, *records);
+            });
+      }
+    stop_if_any_rank_failed(
+      mpi_communicator,
       problem,
       "",
       "Free space on the disk of Output/Directory or choose another one.");
@@ -613,13 +600,13 @@ namespace MpmOtm
       "plastic_strain",
       "id,X,Y,Z,x,y,z,ux,uy,uz,vx,vy,vz,sxx,syy,szz,sxy,syz,sxz,volume,mass,"
       "material,plastic_strain"};
-    return write_file_atomically(output_directory + "/particles-" +
-                                   step_string(step) + ".csv",
-                                 [&](std::ostream &csv) {
-                                   csv << header[dim - 1] << '\n';
-                                   for (const auto &row : sorted)
-                                     csv << row.second;
-                                 });
+    return OutputDirectory::write_file_atomically(
+      output_directory + "/particles-" + step_string(step) + ".csv",
+      [&](std::ostream &csv) {
+        csv << header[dim - 1] << '\n';
+        for (const auto &row : sorted)
+          csv << row.second;
+      });
   }
 
 

@@ -638,6 +638,34 @@ namespace MpmOtm
 
 
 
+  template <int dim>
+  void
+  MaxEnt<dim>::save(CheckpointState &state) const
+  {
+    std::vector<double> values;
+    values.reserve(multipliers.size() * dim);
+    for (const auto &lambda : multipliers)
+      for (unsigned int d = 0; d < dim; ++d)
+        values.push_back(lambda[d]);
+    state.set_shared("max-ent/Lagrange multipliers by point id", values);
+  }
+
+
+
+  template <int dim>
+  void
+  MaxEnt<dim>::load(const CheckpointState &state)
+  {
+    const auto &values =
+      state.shared("max-ent/Lagrange multipliers by point id");
+    multipliers.resize(values.size() / dim);
+    for (unsigned int k = 0; k < multipliers.size(); ++k)
+      for (unsigned int d = 0; d < dim; ++d)
+        multipliers[k][d] = values[k * dim + d];
+  }
+
+
+
   template class MaxEnt<1>;
   template class MaxEnt<2>;
   template class MaxEnt<3>;

@@ -16,6 +16,7 @@
 #include <mpm_otm/grid_system/local_damping.h>
 #include <mpm_otm/grid_system/mass_matrix.h>
 #include <mpm_otm/grid_system/nodal_system.h>
+#include <mpm_otm/io/checkpoint.h>
 #include <mpm_otm/io/output_writer.h>
 #include <mpm_otm/material_points/material_points.h>
 #include <mpm_otm/materials/material_library.h>
@@ -30,6 +31,7 @@
 #include <filesystem>
 #include <iomanip>
 #include <sstream>
+#include <tuple>
 
 namespace MpmOtm
 {
@@ -197,6 +199,7 @@ namespace MpmOtm
         prm.leave_subsection();
       }
     OutputWriter<dim>::declare_parameters(prm);
+    Checkpoint<dim>::declare_parameters(prm);
     BoundaryConditions<dim>::declare_parameters(prm, names.boundaries);
     LocalDamping<dim>::declare_parameters(prm);
 
@@ -311,6 +314,8 @@ namespace MpmOtm
     points->parse_parameters(prm);
     output = std::make_unique<OutputWriter<dim>>();
     output->parse_parameters(prm);
+    checkpoint = std::make_unique<Checkpoint<dim>>();
+    checkpoint->parse_parameters(prm);
     boundary_conditions = std::make_unique<BoundaryConditions<dim>>();
     boundary_conditions->parse_parameters(prm);
     AssertThrow(boundary_conditions->empty() || method == "MPM",
@@ -327,7 +332,7 @@ namespace MpmOtm
 
   template <int dim>
   void
-  Simulator<dim>::setup(const ParameterHandler &prm)
+  Simulator<dim>::setup(const ParameterHandler &prm, const bool resume)
   {
     grid->create(communicator, grid_motion->moves_vertices());
 
@@ -477,15 +482,36 @@ namespace MpmOtm
         }
       stop_if_any_rank_failed(communicator, problem, "", "");
     }
+    current_time = 0;
+    std::string resumed_from;
+    if (resume)
+      {
+        // The grid moves first; the points then enter their saved cells.
+        resumed_from =
+          Checkpoint<dim>::newest(output->directory(), communicator);
+        resumed_state = std::make_unique<CheckpointState>();
+        std::tie(resumed_step, current_time) =
+          Checkpoint<dim>::read(resumed_from,
+                                *points,
+                                *resumed_state,
+                                communicator);
+        grid_motion->load(*resumed_state);
+        shape_functions->load(*resumed_state);
+        system->load(*resumed_state);
+        boundary_conditions->load(*resumed_state);
+      }
     output->initialize(prm,
                        problem_description->has_exact_solution(),
                        problem_description->has_exact_stress(),
                        communicator,
                        *materials,
                        boundary_conditions->names(),
-                       problem_description->has_gravity());
-    output->write_powell_sabin_basis(*shape_functions);
-    current_time = 0;
+                       problem_description->has_gravity(),
+                       resumed_step);
+    if (resume)
+      output->load(*resumed_state);
+    else
+      output->write_powell_sabin_basis(*shape_functions);
 
     pcout << "mpm-otm: " << dim << "D, "
           << grid->triangulation().n_global_active_cells() << " cells, "
@@ -504,6 +530,9 @@ namespace MpmOtm
     pcout << "set-up of the shape functions: wall time = " << std::fixed
           << std::setprecision(3) << shape_function_timer.wall_time() << " s"
           << std::defaultfloat << std::endl;
+    if (resume)
+      pcout << "resumed from <" << resumed_from << ">, written after time step "
+            << resumed_step << " (t = " << current_time << ")" << std::endl;
   }
 
 
@@ -567,9 +596,10 @@ namespace MpmOtm
               << "  kinetic energy = " << statistics.kinetic_energy
               << "  wall time = " << std::fixed << std::setprecision(2)
               << elapsed << " s";
-        if (step > 0 && step < n_steps)
+        if (step > resumed_step && step < n_steps)
           {
-            const double remaining = elapsed * (n_steps - step) / step;
+            const double remaining =
+              elapsed * (n_steps - step) / (step - resumed_step);
             pcout << ", about " << std::setprecision(remaining < 10. ? 1 : 0)
                   << remaining << " s to go";
           }
@@ -581,13 +611,22 @@ namespace MpmOtm
       EnergyMonitor<dim> energy_monitor(energy_growth_limit,
                                         grid->minimal_cell_size() / time_step,
                                         communicator);
-      energy_monitor.check(*points, *materials, stepper.supplied_work());
-      report(0);
+      if (resumed_state)
+        {
+          stepper.load(*resumed_state);
+          energy_monitor.load(*resumed_state);
+          resumed_state.reset();
+        }
+      else
+        {
+          energy_monitor.check(*points, *materials, stepper.supplied_work());
+          report(0);
+        }
       // SIGTERM or SIGINT ends the run after a complete step, with its
       // output; the ranks agree on it where they check the energy.
       const StopSignal stop_signal;
       std::string      signal;
-      for (unsigned int step = 1; step <= n_steps; ++step)
+      for (unsigned int step = resumed_step + 1; step <= n_steps; ++step)
         {
           const double dt = std::min(time_step, end_time - current_time);
           try
@@ -616,14 +655,22 @@ namespace MpmOtm
           current_time = (step == n_steps) ? end_time : current_time + dt;
           if (output->is_output_step(step, step == n_steps) || !signal.empty())
             report(step);
+          if (step < n_steps &&
+              (!signal.empty() || checkpoint->is_due(step, communicator)))
+            {
+              TimerOutput::Scope scope(timer, "checkpoint");
+              write_checkpoint(step, stepper, energy_monitor);
+            }
           if (!signal.empty() && step < n_steps)
             {
               std::ostringstream message;
               message << "Stopped by " << signal << " after time step " << step
                       << " (t = " << current_time
                       << "); the output of this step and of the output steps "
-                      << "before it is in <" << output->directory()
-                      << ">. There is no checkpoint to resume from yet.";
+                      << "before it and a checkpoint of this step are in <"
+                      << output->directory()
+                      << ">. Continue the run with: mpm-otm --resume "
+                      << output->directory();
               stop_message = message.str();
               timer.disable_output();
               break;
@@ -632,6 +679,30 @@ namespace MpmOtm
     }
     AssertThrow(stop_message.empty(), ExcMessage(stop_message));
     return statistics;
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::write_checkpoint(const unsigned int        step,
+                                   const TimeStepper<dim>   &stepper,
+                                   const EnergyMonitor<dim> &energy_monitor)
+  {
+    CheckpointState state;
+    stepper.save(state);
+    energy_monitor.save(state);
+    grid_motion->save(state);
+    shape_functions->save(state);
+    system->save(state);
+    boundary_conditions->save(state);
+    output->save(state);
+    checkpoint->write(output->directory(),
+                      step,
+                      current_time,
+                      *points,
+                      state,
+                      communicator);
   }
 
 

@@ -63,6 +63,12 @@ namespace MpmOtm
             MaterialPoints<dim>    &material_points,
             const double            dt) override;
 
+    void
+    save(CheckpointState &state) const override;
+
+    void
+    load(const CheckpointState &state) override;
+
   private:
     /**
      * Smallest Jacobian determinant over the vertices of a cell with the
@@ -93,6 +99,8 @@ namespace MpmOtm
      * is stored and the local index of its shape function.
      */
     std::vector<Point<dim> *> vertex_positions;
+    /// The triangulation's index of each of them.
+    std::vector<unsigned int> vertex_indices;
     std::vector<unsigned int> vertex_functions;
 
     /**

@@ -68,6 +68,12 @@ namespace MpmOtm
             MaterialPoints<dim>    &material_points,
             const double            dt) override;
 
+    void
+    save(CheckpointState &state) const override;
+
+    void
+    load(const CheckpointState &state) override;
+
   private:
     /**
      * Integral of the one-dimensional B-spline @p i of direction @p d.

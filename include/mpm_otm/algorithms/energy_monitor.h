@@ -3,6 +3,8 @@
 
 #include <deal.II/base/mpi.h>
 
+#include <mpm_otm/base/checkpoint_state.h>
+
 #include <string>
 
 namespace MpmOtm
@@ -57,6 +59,20 @@ namespace MpmOtm
      */
     static std::string
     advice();
+
+    /**
+     * Save the state that this object carries from one time step to the
+     * next into @p state, for a checkpoint.
+     */
+    void
+    save(CheckpointState &state) const;
+
+    /**
+     * Restore the state saved by save() from @p state (of a run on any
+     * number of ranks).
+     */
+    void
+    load(const CheckpointState &state);
 
   private:
     const double   growth_limit;

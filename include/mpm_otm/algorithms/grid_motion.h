@@ -1,6 +1,7 @@
 #ifndef mpm_otm_algorithms_grid_motion_h
 #define mpm_otm_algorithms_grid_motion_h
 
+#include <mpm_otm/base/checkpoint_state.h>
 #include <mpm_otm/grid_system/nodal_system.h>
 
 namespace MpmOtm
@@ -78,6 +79,22 @@ namespace MpmOtm
     advance(const NodalSystem<dim> &system,
             MaterialPoints<dim>    &material_points,
             const double            dt) = 0;
+
+    /**
+     * Save where the grid has moved (vertices, knots) into @p state, for a
+     * checkpoint. Collective. A fixed grid saves nothing.
+     */
+    virtual void
+    save(CheckpointState &) const
+    {}
+
+    /**
+     * Move the grid to where save() found it, from @p state (of a run on
+     * any number of ranks), before the points are read.
+     */
+    virtual void
+    load(const CheckpointState &)
+    {}
   };
 } // namespace MpmOtm
 

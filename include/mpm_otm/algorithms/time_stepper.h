@@ -5,6 +5,7 @@
 
 #include <mpm_otm/algorithms/grid_motion.h>
 #include <mpm_otm/algorithms/nodal_update.h>
+#include <mpm_otm/base/checkpoint_state.h>
 #include <mpm_otm/boundary_conditions/boundary_conditions.h>
 #include <mpm_otm/grid_system/local_damping.h>
 #include <mpm_otm/grid_system/mass_matrix.h>
@@ -75,6 +76,20 @@ namespace MpmOtm
      */
     double
     supplied_work() const;
+
+    /**
+     * Save the state that this object carries from one time step to the
+     * next into @p state, for a checkpoint.
+     */
+    void
+    save(CheckpointState &state) const;
+
+    /**
+     * Restore the state saved by save() from @p state (of a run on any
+     * number of ranks).
+     */
+    void
+    load(const CheckpointState &state);
 
   private:
     void

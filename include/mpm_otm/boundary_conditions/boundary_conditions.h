@@ -6,6 +6,7 @@
 #include <deal.II/base/tensor.h>
 #include <deal.II/lac/la_parallel_vector.h>
 
+#include <mpm_otm/base/checkpoint_state.h>
 #include <mpm_otm/base/parsed_expression.h>
 #include <mpm_otm/problems/problem.h>
 
@@ -150,6 +151,20 @@ namespace MpmOtm
      */
     std::vector<std::pair<Tensor<1, dim>, Tensor<1, dim>>>
     reactions_and_displacements();
+
+    /**
+     * Save the displacements of the prescribed velocities and the reactions
+     * summed since the last output into @p state, for a checkpoint.
+     */
+    void
+    save(CheckpointState &state) const;
+
+    /**
+     * Restore what save() saved from @p state (of a run on any number of
+     * ranks).
+     */
+    void
+    load(const CheckpointState &state);
 
   private:
     enum class Type

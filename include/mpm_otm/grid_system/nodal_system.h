@@ -4,6 +4,7 @@
 #include <deal.II/base/partitioner.h>
 #include <deal.II/lac/la_parallel_vector.h>
 
+#include <mpm_otm/base/checkpoint_state.h>
 #include <mpm_otm/problems/problem.h>
 #include <mpm_otm/shape_functions/particle_shape_data.h>
 
@@ -136,6 +137,21 @@ namespace MpmOtm
      */
     void
     add_external_power(const double power);
+
+    /**
+     * Save the accelerations and velocities of the last step, from which
+     * the next step's solves with a consistent mass matrix start, into
+     * @p state for a checkpoint: each rank those of its functions.
+     */
+    void
+    save(CheckpointState &state) const;
+
+    /**
+     * Restore what save() saved from @p state (of a run on any number of
+     * ranks).
+     */
+    void
+    load(const CheckpointState &state);
 
     /// Lumped nodal masses.
     VectorType lumped_mass;

@@ -4,6 +4,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 
+#include <mpm_otm/base/checkpoint_state.h>
 #include <mpm_otm/io/statistics.h>
 
 #include <fstream>
@@ -60,7 +61,9 @@ namespace MpmOtm
      * statistics.csv; the points' materials are those of @p materials.
      * statistics.csv gets the gravitational energy if @p has_gravity and the
      * reaction force and displacement of each boundary condition in
-     * @p boundary_names.
+     * @p boundary_names. A run resumed after step @p resumed_step (0: a new
+     * run) instead keeps the directory's output up to that step and removes
+     * the later steps' (OutputDirectory::trim_after_step()).
      */
     void
     initialize(const ParameterHandler         &prm,
@@ -69,7 +72,23 @@ namespace MpmOtm
                const MPI_Comm                  communicator,
                const MaterialLibrary<dim>     &materials,
                const std::vector<std::string> &boundary_names,
-               const bool                      has_gravity);
+               const bool                      has_gravity,
+               const unsigned int              resumed_step = 0);
+
+    /**
+     * Save the time series (time and step of every output so far) into
+     * @p state, for a checkpoint.
+     */
+    void
+    save(CheckpointState &state) const;
+
+    /**
+     * Restore the time series from @p state and write their .pvd files
+     * again, so that they list the steps up to the checkpoint's only.
+     * Collective.
+     */
+    void
+    load(const CheckpointState &state);
 
     /**
      * Whether @p step is an output step (@p last: the final step).
@@ -107,16 +126,6 @@ namespace MpmOtm
     write_powell_sabin_basis(const ShapeFunctions<dim> &shape_functions) const;
 
   private:
-    /**
-     * On rank 0, before anything is written: if Output/Directory holds
-     * another run's output (statistics.csv, parameters.prm or a .pvd),
-     * return a message saying so unless Output/Overwrite, and otherwise
-     * remove that run's step files. Returns an empty string if the run may
-     * go on.
-     */
-    std::string
-    clear_previous_output() const;
-
     void
     write_particle_vtu(const unsigned int         step,
                        const double               time,

@@ -6,7 +6,9 @@
 
 #include <mpm_otm/material_points/property_layout.h>
 
+#include <iosfwd>
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace dealii
@@ -78,6 +80,27 @@ namespace MpmOtm
      */
     void
     locate();
+
+    /**
+     * Write this rank's points to @p out for a checkpoint: per point its
+     * cell, id, location, reference location and properties, in the order
+     * of the particle handler (the order of the sums over points, which a
+     * run resumed from the checkpoint must repeat to continue bit by bit).
+     * Returns false if a write failed.
+     */
+    bool
+    write_points(std::ostream &out) const;
+
+    /**
+     * Replace the points by those in @p files, written by write_points()
+     * on each rank of a saved run (on any number of ranks): this rank keeps
+     * the points whose cell it owns, each cell's points in their saved
+     * order. Stops with a message naming the file if one does not fit this
+     * run (another dimension or number of properties, a cell that the grid
+     * does not have) or not every point found a rank. Collective.
+     */
+    void
+    read_points(const std::vector<std::string> &files);
 
     /**
      * The particle handler.

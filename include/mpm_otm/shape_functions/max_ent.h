@@ -93,6 +93,16 @@ namespace MpmOtm
     bool
     is_linearly_complete() const override;
 
+    /**
+     * Save each point's Lagrange multipliers, from which its next Newton
+     * iteration starts.
+     */
+    void
+    save(CheckpointState &state) const override;
+
+    void
+    load(const CheckpointState &state) override;
+
     void
     functions_on_cell(
       const typename Triangulation<dim>::active_cell_iterator &cell,

@@ -7,6 +7,7 @@
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/lac/la_parallel_vector.h>
 
+#include <mpm_otm/base/checkpoint_state.h>
 #include <mpm_otm/shape_functions/particle_shape_data.h>
 
 namespace MpmOtm
@@ -144,6 +145,22 @@ namespace MpmOtm
      */
     virtual void
     to_cell_dofs(const VectorType &coefficients, VectorType &values) const = 0;
+
+    /**
+     * Save what the functions carry from one time step to the next (e.g.
+     * the starting values of an iteration per point) into @p state, for a
+     * checkpoint. Most families carry nothing.
+     */
+    virtual void
+    save(CheckpointState &) const
+    {}
+
+    /**
+     * Restore what save() saved from @p state.
+     */
+    virtual void
+    load(const CheckpointState &)
+    {}
   };
 } // namespace MpmOtm
 

@@ -42,6 +42,13 @@ namespace MpmOtm
   class BoundaryConditions;
   template <int dim>
   class LocalDamping;
+  template <int dim>
+  class Checkpoint;
+  template <int dim>
+  class TimeStepper;
+  template <int dim>
+  class EnergyMonitor;
+  class CheckpointState;
 
   /**
    * Read the entry "Dimension" of a parameter file (1 when @p filename is
@@ -84,10 +91,14 @@ namespace MpmOtm
 
     /**
      * Build everything and write the initial output; checks the time step
-     * against the CFL bound (thesis Eq. 2.48).
+     * against the stable one. With @p resume, continue instead the run in
+     * Output/Directory from its newest checkpoint (`mpm-otm --resume`):
+     * the grid and points are built as for its start (which gives the same
+     * time step), then replaced by the checkpoint's, and the output of the
+     * steps after the checkpoint is removed.
      */
     void
-    setup(const ParameterHandler &prm);
+    setup(const ParameterHandler &prm, const bool resume = false);
 
     /**
      * Run all time steps to the end time; returns the statistics at the end.
@@ -155,6 +166,15 @@ namespace MpmOtm
     stable_time_step() const;
 
   private:
+    /**
+     * Write a checkpoint after step @p step with the state of every part of
+     * the run, including @p stepper's and @p energy_monitor's.
+     */
+    void
+    write_checkpoint(const unsigned int        step,
+                     const TimeStepper<dim>   &stepper,
+                     const EnergyMonitor<dim> &energy_monitor);
+
     MPI_Comm           communicator;
     ConditionalOStream pcout;
 
@@ -183,6 +203,13 @@ namespace MpmOtm
     std::unique_ptr<OutputWriter<dim>>       output;
     std::unique_ptr<BoundaryConditions<dim>> boundary_conditions;
     std::unique_ptr<LocalDamping<dim>>       damping;
+    std::unique_ptr<Checkpoint<dim>>         checkpoint;
+    /// The step after which the checkpoint resumed from was written (0: a
+    /// new run).
+    unsigned int resumed_step = 0;
+    /// Its state, until run() has handed it to the time stepper and the
+    /// energy monitor.
+    std::unique_ptr<CheckpointState> resumed_state;
   };
 } // namespace MpmOtm
 

@@ -1,0 +1,104 @@
+#ifndef mpm_otm_io_checkpoint_h
+#define mpm_otm_io_checkpoint_h
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/parameter_handler.h>
+
+#include <mpm_otm/base/checkpoint_state.h>
+
+#include <chrono>
+#include <string>
+
+namespace MpmOtm
+{
+  using namespace dealii;
+
+  template <int dim>
+  class MaterialPoints;
+
+  /**
+   * Checkpoints of a run and resuming from them (`mpm-otm --resume DIR`).
+   * A checkpoint after step N is the directory checkpoint-NNNNN in the
+   * output directory, holding
+   *  - points-R.bin: the material points of rank R, in the order in which
+   *    that rank sums over them (MaterialPoints::write_points());
+   *  - state-R.bin: rank R's part of the run's state (CheckpointState);
+   *  - shared.bin: the state that is the same on every rank, the step, the
+   *    time and the number of ranks;
+   *  - info.txt: the same for people.
+   * It is written as checkpoint-NNNNN.tmp and renamed when every rank's
+   * files are complete, so that a run killed while writing leaves the
+   * previous checkpoint intact; only the newest `Number kept` are kept.
+   * Resuming reads the newest complete checkpoint on any number of ranks:
+   * every rank reads every rank's files and keeps the points of its cells.
+   * On the number of ranks that wrote it, the resumed run repeats the sums
+   * of the interrupted one in the same order and so continues bit by bit.
+   */
+  template <int dim>
+  class Checkpoint
+  {
+  public:
+    /**
+     * Declare the subsection Checkpoint.
+     */
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    /**
+     * Read the subsection Checkpoint.
+     */
+    void
+    parse_parameters(ParameterHandler &prm);
+
+    /**
+     * Whether a checkpoint is due after time step @p step: every
+     * `Interval` steps, or, checked every ten steps, when `Wall-clock
+     * interval` minutes have passed on rank 0 since the start or the last
+     * checkpoint. Collective.
+     */
+    bool
+    is_due(const unsigned int step, const MPI_Comm communicator) const;
+
+    /**
+     * Write the checkpoint after step @p step at time @p time into
+     * @p directory: the points of @p material_points and @p state. A write
+     * that fails stops every rank with a message naming the file.
+     * Collective.
+     */
+    void
+    write(const std::string         &directory,
+          const unsigned int         step,
+          const double               time,
+          const MaterialPoints<dim> &material_points,
+          const CheckpointState     &state,
+          const MPI_Comm             communicator);
+
+    /**
+     * The name of the newest complete checkpoint in @p directory; stops
+     * with a message if it holds none. Collective.
+     */
+    static std::string
+    newest(const std::string &directory, const MPI_Comm communicator);
+
+    /**
+     * Read the checkpoint @p checkpoint: replace the points of
+     * @p material_points by its points, fill @p state and return the step
+     * and time after which it was written. Collective.
+     */
+    static std::pair<unsigned int, double>
+    read(const std::string   &checkpoint,
+         MaterialPoints<dim> &material_points,
+         CheckpointState     &state,
+         const MPI_Comm       communicator);
+
+  private:
+    unsigned int step_interval = 0;
+    double       minutes       = 0;
+    unsigned int n_kept        = 2;
+    /// When the run started or the last checkpoint was written.
+    std::chrono::steady_clock::time_point last_write =
+      std::chrono::steady_clock::now();
+  };
+} // namespace MpmOtm
+
+#endif

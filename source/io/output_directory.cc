@@ -1,0 +1,167 @@
+#include <mpm_otm/io/output_directory.h>
+
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <vector>
+
+namespace MpmOtm
+{
+  namespace OutputDirectory
+  {
+    namespace
+    {
+      namespace fs = std::filesystem;
+
+      /**
+       * A file or directory that a run writes at a step; the first group
+       * that matched holds the step (none for the .pvd files and the
+       * Powell-Sabin picture).
+       */
+      const std::regex step_file(
+        "particles-([0-9]+)\\.csv|(?:particles|grid)_([0-9]+)(?:\\.[0-9]+)?"
+        "\\.(?:vtu|pvtu)|checkpoint-([0-9]+)(?:\\.tmp)?|(?:particles|grid)"
+        "\\.pvd|powell-sabin-basis\\.vtu");
+
+      /**
+       * The step files in @p directory with their steps (-1 for files of
+       * no step), or a message.
+       */
+      std::string
+      list_step_files(const std::string                      &directory,
+                      std::vector<std::pair<fs::path, long>> &files)
+      {
+        // Non-throwing iteration: an error on rank 0 must reach the other
+        // ranks through the caller's broadcast.
+        std::error_code error;
+        for (fs::directory_iterator entry(directory, error), end;
+             !error && entry != end;
+             entry.increment(error))
+          {
+            std::smatch       match;
+            const std::string name = entry->path().filename().string();
+            if (!std::regex_match(name, match, step_file))
+              continue;
+            long step = -1;
+            for (unsigned int group = 1; group < match.size(); ++group)
+              if (match[group].matched)
+                step = std::stol(match[group]);
+            files.emplace_back(entry->path(), step);
+          }
+        return error ?
+                 "Cannot list <" + directory + ">: " + error.message() + "." :
+                 "";
+      }
+
+      std::string
+      remove_path(const fs::path &path)
+      {
+        std::error_code error;
+        fs::remove_all(path, error);
+        return error ? "Cannot remove <" + path.string() +
+                         ">: " + error.message() + "." :
+                       "";
+      }
+    } // namespace
+
+
+
+    std::string
+    write_file_atomically(const std::string                         &file_name,
+                          const std::function<void(std::ostream &)> &write)
+    {
+      const std::string temporary = file_name + ".tmp";
+      std::ofstream     file(temporary);
+      if (file)
+        write(file);
+      file.close();
+      std::error_code error;
+      if (file)
+        fs::rename(temporary, file_name, error);
+      if (file && !error)
+        return "";
+      const std::string reason =
+        error ? error.message() : std::string(std::strerror(errno));
+      fs::remove(temporary, error);
+      return "Could not write <" + file_name + ">: " + reason + ". ";
+    }
+
+
+
+    std::string
+    clear_previous_run(const std::string &directory, const bool overwrite)
+    {
+      std::error_code error;
+      if (!fs::is_directory(directory, error))
+        return "";
+      std::vector<std::string> found;
+      for (const std::string name :
+           {"statistics.csv", "parameters.prm", "particles.pvd", "grid.pvd"})
+        if (fs::exists(fs::symlink_status(directory + "/" + name, error)))
+          found.push_back(name);
+      if (found.empty())
+        return "";
+      if (!overwrite)
+        {
+          std::string names;
+          for (const auto &name : found)
+            names += (names.empty() ? "" : ", ") + name;
+          return "Output/Directory: <" + directory +
+                 "> holds the output of another run (" + names +
+                 "). Choose another Output/Directory, remove that one, let "
+                 "this run replace it (set Output/Overwrite = true or run "
+                 "mpm-otm --overwrite FILE), or continue that run from its "
+                 "newest checkpoint (mpm-otm --resume " +
+                 directory + ").";
+        }
+      // The step files of the earlier run, which a shorter run would leave
+      // beside its own.
+      std::vector<std::pair<fs::path, long>> files;
+      std::string problem = list_step_files(directory, files);
+      for (unsigned int k = 0; k < files.size() && problem.empty(); ++k)
+        problem = remove_path(files[k].first);
+      return problem.empty() ? "" : "Output/Overwrite: " + problem;
+    }
+
+
+
+    std::string
+    trim_after_step(const std::string &directory, const unsigned int step)
+    {
+      std::vector<std::pair<fs::path, long>> files;
+      std::string problem = list_step_files(directory, files);
+      for (unsigned int k = 0; k < files.size() && problem.empty(); ++k)
+        {
+          const bool unfinished_checkpoint =
+            files[k].first.extension() == ".tmp";
+          if (files[k].second > static_cast<long>(step) ||
+              unfinished_checkpoint)
+            problem = remove_path(files[k].first);
+        }
+      if (!problem.empty())
+        return problem;
+
+      // The header and the rows up to the step.
+      const std::string name = directory + "/statistics.csv";
+      std::ifstream     in(name);
+      if (!in)
+        return "Cannot read <" + name + ">: " + std::strerror(errno) + ".";
+      std::ostringstream kept;
+      std::string        line;
+      bool               header = true;
+      while (std::getline(in, line))
+        {
+          if (header ||
+              std::strtol(line.c_str(), nullptr, 10) <= static_cast<long>(step))
+            kept << line << '\n';
+          header = false;
+        }
+      return write_file_atomically(name, [&](std::ostream &out) {
+        out << kept.str();
+      });
+    }
+  } // namespace OutputDirectory
+} // namespace MpmOtm
