@@ -83,7 +83,8 @@ done
 } > "$data/B1b-stress-profile.dat"
 
 echo "B1a: RMS stress error of MPM and OTM over the first 20 steps"
-run B1a-bar-fixed-ends-conference.prm "set Method = MPM"
+run B1a-bar-fixed-ends-conference.prm "set Method = MPM
+set Update scheme = USL"
 cut -d, -f1,8 run/statistics.csv | tail -n +2 > mpm.csv
 run B1a-bar-fixed-ends-conference.prm "set Method = OTM"
 cut -d, -f8 run/statistics.csv | tail -n +2 > otm.csv

@@ -125,13 +125,17 @@ namespace MpmOtm
       "OTM, the particle update is that of 'Update scheme'; the journal uses "
       "it with Mass matrix = consistent. OTM and Unified mesh only the "
       "material domain.");
-    prm.declare_entry("Update scheme",
-                      "USL",
-                      Patterns::Selection(
-                        PluginRegistry<NodalUpdate<dim>>::selection()),
-                      "Nodal update of Method = MPM and Unified:" +
-                        PluginRegistry<NodalUpdate<dim>>::documentation() +
-                        " (OTM has its own, Eq. 51).");
+    prm.declare_entry(
+      "Update scheme",
+      "automatic",
+      Patterns::Selection("automatic|" +
+                          PluginRegistry<NodalUpdate<dim>>::selection()),
+      "Nodal update of Method = MPM and Unified:" +
+        PluginRegistry<NodalUpdate<dim>>::documentation() +
+        ". automatic: MUSL for MPM (USL, the sources' update, gained energy "
+        "and blew up on the user problems G1-G3, where MUSL ran: manual, "
+        "'Your own problem'), USL for Unified (journal Alg. 3). OTM has its "
+        "own update (Eq. 51) and takes no other.");
     prm.declare_entry("Shape functions",
                       "linear",
                       Patterns::Selection(
@@ -232,13 +236,16 @@ namespace MpmOtm
                            "functions per vertex do not move with the "
                            "vertices, which OTM and the unified approach "
                            "need (a moving triangulation is future work)."));
+    std::string update_scheme = prm.get("Update scheme");
+    if (update_scheme == "automatic")
+      update_scheme = (method == "MPM") ? "MUSL" : "USL";
     if (method == "OTM")
       {
-        AssertThrow(prm.get("Update scheme") == "USL",
+        AssertThrow(prm.get("Update scheme") == "automatic",
                     ExcMessage("Update scheme = " + prm.get("Update scheme") +
                                " applies to Method = MPM or Unified; OTM has "
                                "its own nodal update (journal Eq. 51). Remove "
-                               "the entry or set it to USL."));
+                               "the entry."));
         AssertThrow(shape_functions->is_linearly_complete(),
                     ExcMessage(
                       "Method = OTM needs linearly complete shape "
@@ -257,8 +264,7 @@ namespace MpmOtm
                 << "consistent mass matrix (Eq. 48)." << std::endl;
       }
     else
-      nodal_update =
-        PluginRegistry<NodalUpdate<dim>>::create(prm.get("Update scheme"));
+      nodal_update = PluginRegistry<NodalUpdate<dim>>::create(update_scheme);
     if (method == "MPM")
       grid_motion = std::make_unique<FixedGrid<dim>>();
     else if (auto *splines =
@@ -611,6 +617,12 @@ namespace MpmOtm
       EnergyMonitor<dim> energy_monitor(energy_growth_limit,
                                         grid->minimal_cell_size() / time_step,
                                         communicator);
+      // SIGTERM or SIGINT ends the run after a complete step, with its
+      // output and a checkpoint; the ranks agree on it where they check the
+      // energy. Installed before the first output, which a scheduler may
+      // already interrupt.
+      const StopSignal stop_signal;
+      std::string      signal;
       if (resumed_state)
         {
           stepper.load(*resumed_state);
@@ -622,10 +634,6 @@ namespace MpmOtm
           energy_monitor.check(*points, *materials, stepper.supplied_work());
           report(0);
         }
-      // SIGTERM or SIGINT ends the run after a complete step, with its
-      // output; the ranks agree on it where they check the energy.
-      const StopSignal stop_signal;
-      std::string      signal;
       for (unsigned int step = resumed_step + 1; step <= n_steps; ++step)
         {
           const double dt = std::min(time_step, end_time - current_time);

@@ -37,7 +37,7 @@ test(const std::string &shape_functions, const unsigned int cells)
   auto         simulator = make_simulator<dim>(
     "",
     "set Dimension = " + std::to_string(dim) +
-      "\nset Problem = custom\n"
+      "\nset Problem = custom\nset Update scheme = USL\n"
               "set Shape functions = " +
       shape_functions + "\nsubsection Mesh\n set Lower corner = " + lower +
       "\n set Upper corner = " + upper + "\n set Subdivisions = " + blocks +

@@ -26,7 +26,7 @@ test(const std::string &file,
 {
   const MPI_Comm    world = MPI_COMM_WORLD;
   const std::string mesh  = "set Dimension = " + std::to_string(dim) +
-                           "\nset Problem = custom\n"
+                           "\nset Problem = custom\nset Update scheme = USL\n"
                            "subsection Mesh\n  set Mesh file = " +
                            std::string(MPM_OTM_SOURCE_DIR) + "/tests/meshes/" +
                            file +

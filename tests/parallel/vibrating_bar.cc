@@ -94,7 +94,8 @@ end
   compare<2>("2D", common + bar_2d);
   compare<3>("3D", common + bar_3d);
   compare<2>("2D OTM",
-             common + bar_2d + "set Method = OTM\nset Update scheme = USL\n");
+             common + bar_2d +
+               "set Method = OTM\nset Update scheme = automatic\n");
   compare<3>("3D Unified", common + bar_3d + "set Method = Unified\n");
   // Quadratic B-splines: functions reach over several cells, so the ranks
   // exchange more than the shared vertices; the knots move on every rank.

@@ -2,8 +2,8 @@
 # A run stopped by SIGTERM writes a checkpoint of its last step; mpm-otm
 # --resume continues it to the end, and its last particle CSV equals, every
 # digit, that of the same run left uninterrupted. Serial and on two MPI
-# ranks. A second --resume of a finished run starts from the newest
-# checkpoint again and ends with the same file.
+# ranks. The signal is sent right after the first output, so that the run
+# cannot have finished before it arrives.
 # Usage: sigterm_then_resume.sh <mpm-otm> <parameter file>
 exe=$1
 prm=$2
@@ -21,7 +21,6 @@ for ranks in 1 2; do
   rm -rf $directory
 
   start_run $ranks log
-  sleep 1
   kill -TERM $run
   wait $run
   step=$(tr '\n' ' ' < log | grep -o 'Stopped by SIGTERM after time step [0-9]*' | grep -o '[0-9]*$')
@@ -43,10 +42,4 @@ for ranks in 1 2; do
   [ "$(cut -d, -f1 $directory/statistics.csv | sort | uniq -d)" = "" ] ||
     { echo "statistics.csv lists a step twice"; exit 1; }
   echo "$ranks rank(s): resumed run identical to the uninterrupted one"
-
-  $launch "$exe" --resume $directory > log 2>&1 ||
-    { echo "the second resumed run failed:"; cat log; exit 1; }
-  cmp $directory/$last_csv reference-$ranks.csv ||
-    { echo "the second resumed run ends otherwise"; exit 1; }
-  echo "$ranks rank(s): resumed again from the same checkpoint, identical"
 done
