@@ -119,7 +119,6 @@ namespace MpmOtm
     std::vector<unsigned int> position_of_vertex(triangulation->n_vertices(),
                                                  numbers::invalid_unsigned_int);
     vertex_positions.clear();
-    vertex_indices.clear();
     vertex_functions.clear();
     owned_cell_vertices.clear();
     owned_cells.clear();
@@ -137,7 +136,6 @@ namespace MpmOtm
               {
                 position = vertex_positions.size();
                 vertex_positions.push_back(&cell->vertex(v));
-                vertex_indices.push_back(cell->vertex_index(v));
                 const types::global_dof_index function =
                   shape_functions.vertex_function(cell, v);
                 AssertThrow(function != numbers::invalid_dof_index,
@@ -288,6 +286,15 @@ namespace MpmOtm
 
 
   template <int dim>
+  unsigned int
+  AdvectedGrid<dim>::vertex_index(const unsigned int k) const
+  {
+    return vertex_positions[k] - triangulation->get_vertices().data();
+  }
+
+
+
+  template <int dim>
   void
   AdvectedGrid<dim>::save(CheckpointState &state) const
   {
@@ -297,7 +304,7 @@ namespace MpmOtm
     vertices.reserve(vertex_positions.size() * (dim + 1));
     for (unsigned int k = 0; k < vertex_positions.size(); ++k)
       {
-        vertices.push_back(vertex_indices[k]);
+        vertices.push_back(vertex_index(k));
         for (unsigned int d = 0; d < dim; ++d)
           vertices.push_back((*vertex_positions[k])[d]);
       }
@@ -325,11 +332,11 @@ namespace MpmOtm
         }
     for (unsigned int k = 0; k < vertex_positions.size(); ++k)
       {
-        AssertThrow(found[vertex_indices[k]],
+        const unsigned int index = vertex_index(k);
+        AssertThrow(found[index],
                     ExcMessage("The checkpoint lacks vertex " +
-                               std::to_string(vertex_indices[k]) +
-                               " of the moving grid."));
-        *vertex_positions[k] = saved[vertex_indices[k]];
+                               std::to_string(index) + " of the moving grid."));
+        *vertex_positions[k] = saved[index];
       }
     triangulation->signals.mesh_movement();
   }

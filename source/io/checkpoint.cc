@@ -2,6 +2,7 @@
 
 #include <mpm_otm/base/collective_error.h>
 #include <mpm_otm/io/checkpoint.h>
+#include <mpm_otm/io/output_directory.h>
 #include <mpm_otm/material_points/material_points.h>
 
 #include <boost/archive/binary_iarchive.hpp>
@@ -14,7 +15,6 @@
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
-#include <regex>
 
 namespace MpmOtm
 {
@@ -24,8 +24,6 @@ namespace MpmOtm
 
     /// First words of shared.bin; a new layout gets a new number.
     const std::string format = "mpm-otm checkpoint 1";
-
-    const std::regex checkpoint_name("checkpoint-([0-9]+)");
 
     std::string
     rank_file(const std::string &checkpoint,
@@ -41,26 +39,6 @@ namespace MpmOtm
     {
       return "Could not write the checkpoint file <" + file +
              ">: " + std::strerror(errno) + ". ";
-    }
-
-    /// The steps of the complete checkpoints in @p directory, ascending.
-    std::vector<unsigned int>
-    checkpoint_steps(const std::string &directory)
-    {
-      std::vector<unsigned int> steps;
-      std::error_code           error;
-      for (fs::directory_iterator entry(directory, error), end;
-           !error && entry != end;
-           entry.increment(error))
-        {
-          std::smatch       match;
-          const std::string name = entry->path().filename().string();
-          if (std::regex_match(name, match, checkpoint_name) &&
-              fs::exists(entry->path() / "shared.bin", error))
-            steps.push_back(std::stoul(match[1]));
-        }
-      std::sort(steps.begin(), steps.end());
-      return steps;
     }
 
     std::string
@@ -220,7 +198,8 @@ namespace MpmOtm
           }
         if (problem.empty())
           {
-            const auto steps = checkpoint_steps(directory);
+            const auto steps =
+              OutputDirectory::checkpoint_steps(directory, "shared.bin");
             for (unsigned int k = 0; k + n_kept < steps.size(); ++k)
               fs::remove_all(checkpoint_directory(directory, steps[k]), error);
           }
@@ -239,7 +218,8 @@ namespace MpmOtm
     std::string name;
     if (Utilities::MPI::this_mpi_process(communicator) == 0)
       {
-        const auto steps = checkpoint_steps(directory);
+        const auto steps =
+          OutputDirectory::checkpoint_steps(directory, "shared.bin");
         if (!steps.empty())
           name = checkpoint_directory(directory, steps.back());
       }

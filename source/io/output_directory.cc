@@ -1,5 +1,6 @@
 #include <mpm_otm/io/output_directory.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
@@ -124,6 +125,23 @@ namespace MpmOtm
       for (unsigned int k = 0; k < files.size() && problem.empty(); ++k)
         problem = remove_path(files[k].first);
       return problem.empty() ? "" : "Output/Overwrite: " + problem;
+    }
+
+
+
+    std::vector<unsigned int>
+    checkpoint_steps(const std::string &directory, const std::string &last_file)
+    {
+      std::vector<std::pair<fs::path, long>> files;
+      list_step_files(directory, files);
+      std::vector<unsigned int> steps;
+      std::error_code           error;
+      for (const auto &[path, step] : files)
+        if (path.filename().string().rfind("checkpoint-", 0) == 0 &&
+            path.extension() != ".tmp" && fs::exists(path / last_file, error))
+          steps.push_back(step);
+      std::sort(steps.begin(), steps.end());
+      return steps;
     }
 
 

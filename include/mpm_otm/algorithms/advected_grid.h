@@ -95,12 +95,16 @@ namespace MpmOtm
     double stable_size = 0.;
 
     /**
+     * The index in the triangulation of vertex_positions[k].
+     */
+    unsigned int
+    vertex_index(const unsigned int k) const;
+
+    /**
      * Each vertex of a locally owned or ghost cell once: where its position
      * is stored and the local index of its shape function.
      */
     std::vector<Point<dim> *> vertex_positions;
-    /// The triangulation's index of each of them.
-    std::vector<unsigned int> vertex_indices;
     std::vector<unsigned int> vertex_functions;
 
     /**

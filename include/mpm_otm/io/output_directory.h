@@ -4,6 +4,7 @@
 #include <functional>
 #include <ostream>
 #include <string>
+#include <vector>
 
 namespace MpmOtm
 {
@@ -42,6 +43,15 @@ namespace MpmOtm
      */
     std::string
     trim_after_step(const std::string &directory, const unsigned int step);
+
+    /**
+     * The steps of the complete checkpoints in @p directory (directories
+     * checkpoint-NNNNN, not .tmp, that hold the file @p last_file, which a
+     * checkpoint is written with last), ascending.
+     */
+    std::vector<unsigned int>
+    checkpoint_steps(const std::string &directory,
+                     const std::string &last_file);
   } // namespace OutputDirectory
 } // namespace MpmOtm
 
