@@ -8,13 +8,12 @@
 #include <deal.II/grid/grid_tools.h>
 
 #include <mpm_otm/base/collective_error.h>
+#include <mpm_otm/base/node_memory.h>
 #include <mpm_otm/grid/background_grid.h>
 #include <mpm_otm/grid/gmsh_file.h>
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
-#include <fstream>
 #include <iomanip>
 #include <limits>
 #include <sstream>
@@ -230,6 +229,7 @@ namespace MpmOtm
                           " (which run in parallel)."));
             tria = std::make_unique<Triangulation<dim>>();
           }
+        check_memory(communicator);
         gmsh->read(*tria);
         if (simplex)
           map = std::make_unique<MappingFE<dim>>(FE_SimplexP<dim>(1));
@@ -271,46 +271,35 @@ namespace MpmOtm
     // "Memory"); the bound for a line is a guess.
     const double bytes_per_cell[] = {0., 200., 800., 1800.};
     double       n_cells          = 1.;
-    for (unsigned int d = 0; d < dim; ++d)
-      n_cells *= blocks[d];
-    if (simplex)
-      n_cells *= (dim == 2 ? 4. : 5.);
+    if (gmsh)
+      n_cells = gmsh->n_cells();
+    else
+      {
+        for (unsigned int d = 0; d < dim; ++d)
+          n_cells *= blocks[d];
+        if (simplex)
+          n_cells *= (dim == 2 ? 4. : 5.);
+      }
     const double needed = bytes_per_cell[dim] * n_cells;
 
-    double        available = 0.;
-    std::ifstream meminfo("/proc/meminfo");
-    for (std::string line; std::getline(meminfo, line);)
-      if (line.rfind("MemAvailable:", 0) == 0)
-        available = 1024. * std::strtod(line.c_str() + 13, nullptr);
-
-    MPI_Comm node;
-    MPI_Comm_split_type(communicator,
-                        MPI_COMM_TYPE_SHARED,
-                        0,
-                        MPI_INFO_NULL,
-                        &node);
-    const unsigned int ranks_on_node = Utilities::MPI::n_mpi_processes(node);
-    const bool         reports = (Utilities::MPI::this_mpi_process(node) == 0);
-    MPI_Comm_free(&node);
-
-    // One rank per node says it.
-    std::string problem;
-    if (reports && available > 0. && needed * ranks_on_node > available)
-      {
-        std::ostringstream message;
-        message << std::setprecision(3) << "Mesh/Subdivisions: the grid of "
-                << n_cells << " cells needs at least " << needed / 1e9
-                << " GB on every MPI rank (each holds all cells of the "
-                << "coarse mesh), " << needed * ranks_on_node / 1e9
-                << " GB for the " << ranks_on_node
-                << " rank(s) on this node, which has " << available / 1e9
-                << " GB available (MemAvailable in /proc/meminfo). ";
-        problem = message.str();
-      }
+    // Every rank holds all cells of the coarse mesh.
+    const NodeMemory   memory(communicator);
+    const std::string  shortage = memory.shortage(memory.sum_on_node(needed));
+    std::ostringstream message;
+    if (!shortage.empty())
+      message << std::setprecision(3)
+              << (gmsh ? "Mesh/Mesh file: the mesh of <" + file + "> with " :
+                         std::string("Mesh/Subdivisions: the grid of "))
+              << n_cells << " cells needs at least " << needed / 1e9
+              << " GB on every MPI rank (each holds all cells of the coarse "
+              << "mesh): at least " << shortage;
     stop_if_any_rank_failed(communicator,
-                            problem,
+                            message.str(),
                             "",
-                            "Use fewer Subdivisions, or fewer ranks per node.");
+                            gmsh ? "Use a coarser mesh, or fewer ranks per "
+                                   "node." :
+                                   "Use fewer Subdivisions, or fewer ranks "
+                                   "per node.");
   }
 
 

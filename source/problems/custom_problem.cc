@@ -99,8 +99,30 @@ namespace MpmOtm
                                               dim,
                                               true,
                                               path + "Traction");
-    region_lower = prm.get("Material lower corner");
-    region_upper = prm.get("Material upper corner");
+    region.reset();
+    if (!prm.get("Material lower corner").empty() ||
+        !prm.get("Material upper corner").empty())
+      {
+        const auto lower = Utilities::string_to_double(
+          Utilities::split_string_list(prm.get("Material lower corner")));
+        const auto upper = Utilities::string_to_double(
+          Utilities::split_string_list(prm.get("Material upper corner")));
+        AssertThrow(lower.size() == dim && upper.size() == dim,
+                    ExcMessage("Custom problem/Material lower corner and "
+                               "Material upper corner need " +
+                               std::to_string(dim) + " values each."));
+        Point<dim> p1, p2;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            p1[d] = lower[d];
+            p2[d] = upper[d];
+            AssertThrow(p2[d] > p1[d],
+                        ExcMessage(
+                          "Custom problem/Material upper corner must be "
+                          "above Material lower corner."));
+          }
+        region = BoundingBox<dim>(std::make_pair(p1, p2));
+      }
     displacement.reset();
     if (!prm.get("Exact displacement").empty())
       displacement =
@@ -164,26 +186,7 @@ namespace MpmOtm
                            "Unified mesh only the material, tractions act on "
                            "the region's sides), which Bodies replace: use "
                            "Method = MPM with Bodies, or no Bodies."));
-    if (region_lower.empty() && region_upper.empty())
-      return this->grid_box;
-    const auto lower =
-      Utilities::string_to_double(Utilities::split_string_list(region_lower));
-    const auto upper =
-      Utilities::string_to_double(Utilities::split_string_list(region_upper));
-    AssertThrow(lower.size() == dim && upper.size() == dim,
-                ExcMessage("Custom problem/Material lower corner and "
-                           "Material upper corner need " +
-                           std::to_string(dim) + " values each."));
-    Point<dim> p1, p2;
-    for (unsigned int d = 0; d < dim; ++d)
-      {
-        p1[d] = lower[d];
-        p2[d] = upper[d];
-        AssertThrow(p2[d] > p1[d],
-                    ExcMessage("Custom problem/Material upper corner must be "
-                               "above Material lower corner."));
-      }
-    return BoundingBox<dim>(std::make_pair(p1, p2));
+    return region ? *region : this->grid_box;
   }
 
 

@@ -144,10 +144,10 @@ namespace MpmOtm
     create_simplex_blocks_2d();
 
     /**
-     * Stop, on every rank and before the triangulation is allocated, if
-     * the cells of the box grid need more memory than the node has
-     * available for its ranks: each rank holds every cell of the coarse
-     * mesh. Collective; does nothing where /proc/meminfo is missing.
+     * Stop, on every rank and before the triangulation is filled, if the
+     * cells of the box grid or of the Mesh file need more memory than the
+     * node has available for its ranks: each rank holds every cell of the
+     * coarse mesh. Collective; does nothing where /proc/meminfo is missing.
      */
     void
     check_memory(const MPI_Comm communicator) const;

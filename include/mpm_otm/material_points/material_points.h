@@ -180,6 +180,17 @@ namespace MpmOtm
     locate_on_simplices();
 
     /**
+     * Stop, on every rank and before any point is created, if the points
+     * of the seeding pattern that lie in the bodies need more memory than
+     * the node has available for its ranks. The points are counted only if
+     * the whole pattern would not fit, and only until one rank's points
+     * alone exceed the node's memory. Collective.
+     */
+    void
+    check_memory(const MaterialLibrary<dim> &materials,
+                 const Problem<dim>         &problem) const;
+
+    /**
      * Locate on a fixed grid of axis-parallel boxes by arithmetic: a point
      * still inside its cell only gets its reference coordinates; a point
      * that entered another locally owned cell is moved there. Returns false

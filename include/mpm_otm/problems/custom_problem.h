@@ -6,6 +6,7 @@
 #include <mpm_otm/problems/problem.h>
 
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace MpmOtm
@@ -104,8 +105,8 @@ namespace MpmOtm
     std::unique_ptr<ParsedExpression<dim>> displacement;
     std::vector<FixedComponents<dim>>      fixed;
     std::vector<types::boundary_id>        traction_ids;
-    std::string                            region_lower;
-    std::string                            region_upper;
+    /// The box material region, if given (else the grid's box).
+    std::optional<BoundingBox<dim>> region;
   };
 } // namespace MpmOtm
 
