@@ -9,7 +9,7 @@ exe=$1
 prm=$2
 directory=output-resume
 . "$(dirname "$0")/start_run.sh"
-last_csv=particles-02000.csv
+last_csv=particles-10000.csv
 
 for ranks in 1 2; do
   launch=""
@@ -37,8 +37,8 @@ for ranks in 1 2; do
     { echo "the resumed run does not name its checkpoint:"; cat log; exit 1; }
   cmp $directory/$last_csv reference-$ranks.csv ||
     { echo "the resumed run ends otherwise than the uninterrupted one"; exit 1; }
-  [ "$(tail -n 1 $directory/statistics.csv | cut -d, -f1)" = "2000" ] ||
-    { echo "statistics.csv does not end with step 2000"; exit 1; }
+  [ "$(tail -n 1 $directory/statistics.csv | cut -d, -f1)" = "10000" ] ||
+    { echo "statistics.csv does not end with step 10000"; exit 1; }
   [ "$(cut -d, -f1 $directory/statistics.csv | sort | uniq -d)" = "" ] ||
     { echo "statistics.csv lists a step twice"; exit 1; }
   echo "$ranks rank(s): resumed run identical to the uninterrupted one"
