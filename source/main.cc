@@ -1,6 +1,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 
+#include <mpm_otm/base/stop_signal.h>
 #include <mpm_otm/simulator/simulator.h>
 
 #include <algorithm>
@@ -246,6 +247,13 @@ main(int argc, char *argv[])
             run<3>(argument, overwrite, resume_directory);
             break;
         }
+    }
+  catch (const MpmOtm::StoppedBySignal &stop)
+    {
+      // Every rank stops at the same step: no rank is left waiting.
+      if (root)
+        std::cerr << "\nmpm-otm stopped:\n    " << stop.what() << std::endl;
+      return stop.exit_status();
     }
   catch (const dealii::ExceptionBase &error)
     {

@@ -55,4 +55,20 @@ namespace MpmOtm
       return "SIGINT";
     return "";
   }
+
+
+
+  StoppedBySignal::StoppedBySignal(const std::string &message,
+                                   const std::string &signal)
+    : std::runtime_error(message)
+    , status(128 + (signal == "SIGINT" ? SIGINT : SIGTERM))
+  {}
+
+
+
+  int
+  StoppedBySignal::exit_status() const
+  {
+    return status;
+  }
 } // namespace MpmOtm

@@ -76,10 +76,21 @@ namespace MpmOtm
     else if (!grid->is_box() || !locate_in_boxes())
       particles->sort_particles_into_subdomains_and_cells();
 
+    // The first few points of each rank: a body that leaves the grid at
+    // once would otherwise give a message of thousands of lines.
+    const unsigned int listed = 3;
     std::ostringstream message;
-    for (const auto &[id, location] : lost_points)
-      message << "material point " << id << " at (" << location
-              << ") left the background grid. ";
+    for (unsigned int i = 0;
+         i < std::min<std::size_t>(lost_points.size(), listed);
+         ++i)
+      message << "material point " << lost_points[i].first << " at ("
+              << lost_points[i].second << ") left the background grid. ";
+    if (lost_points.size() > listed)
+      message << "So did " << lost_points.size() - listed
+              << (lost_points.size() - listed == 1 ? " more material point" :
+                                                     " more material points")
+              << " of MPI rank "
+              << Utilities::MPI::this_mpi_process(communicator()) << ". ";
     stop_if_any_rank_failed(communicator(),
                             message.str(),
                             "",

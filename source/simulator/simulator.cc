@@ -553,6 +553,7 @@ namespace MpmOtm
     // timer is gone: deal.II's TimerOutput prints a notice in front of the
     // error if it is destroyed while an exception is in flight.
     std::string stop_message;
+    std::string stopped_by;
     {
       TimerOutput      timer(communicator,
                         pcout,
@@ -680,11 +681,14 @@ namespace MpmOtm
                       << ">. Continue the run with: mpm-otm --resume "
                       << output->directory();
               stop_message = message.str();
+              stopped_by   = signal;
               timer.disable_output();
               break;
             }
         }
     }
+    if (!stopped_by.empty())
+      throw StoppedBySignal(stop_message, stopped_by);
     AssertThrow(stop_message.empty(), ExcMessage(stop_message));
     return statistics;
   }

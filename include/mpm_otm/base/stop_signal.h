@@ -4,6 +4,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <csignal>
+#include <stdexcept>
 #include <string>
 
 namespace MpmOtm
@@ -44,6 +45,32 @@ namespace MpmOtm
     using Handler = void (*)(int);
     Handler previous_terminate;
     Handler previous_interrupt;
+  };
+
+  /**
+   * The exception that ends a run stopped by a signal, thrown on every rank
+   * at once: main() prints its message and exits with 128 plus the signal's
+   * number (143 for SIGTERM, 130 for SIGINT), as a shell reports a program
+   * that the signal ended, so that a job script can tell such a stop from
+   * an error (status 1).
+   */
+  class StoppedBySignal : public std::runtime_error
+  {
+  public:
+    /**
+     * The run stopped because of @p signal ("SIGTERM" or "SIGINT"), as
+     * @p message says.
+     */
+    StoppedBySignal(const std::string &message, const std::string &signal);
+
+    /**
+     * 128 plus the number of the signal.
+     */
+    int
+    exit_status() const;
+
+  private:
+    int status;
   };
 } // namespace MpmOtm
 
