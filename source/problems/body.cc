@@ -1,5 +1,6 @@
 #include <deal.II/base/utilities.h>
 
+#include <mpm_otm/base/read_point.h>
 #include <mpm_otm/materials/material_library.h>
 #include <mpm_otm/problems/body.h>
 
@@ -9,33 +10,6 @@ namespace MpmOtm
 {
   namespace
   {
-    /**
-     * Read a point from a comma-separated list of dim numbers.
-     */
-    template <int dim>
-    Point<dim>
-    read_point(const std::string &text, const std::string &entry)
-    {
-      std::vector<double> values;
-      try
-        {
-          values =
-            Utilities::string_to_double(Utilities::split_string_list(text));
-        }
-      catch (const std::exception &)
-        {
-          values.clear();
-        }
-      AssertThrow(values.size() == dim,
-                  ExcMessage(entry + ": <" + text + "> must be " +
-                             std::to_string(dim) +
-                             " numbers separated by ','."));
-      Point<dim> point;
-      for (unsigned int d = 0; d < dim; ++d)
-        point[d] = values[d];
-      return point;
-    }
-
     /**
      * Number of independent stress components and their names, in the order
      * of the entry "Initial stress" (that of the particle CSV).

@@ -1,4 +1,5 @@
 #include <mpm_otm/base/plugins.h>
+#include <mpm_otm/base/read_point.h>
 #include <mpm_otm/base/subsection_names.h>
 #include <mpm_otm/materials/material_library.h>
 #include <mpm_otm/problems/custom_problem.h>
@@ -103,24 +104,16 @@ namespace MpmOtm
     if (!prm.get("Material lower corner").empty() ||
         !prm.get("Material upper corner").empty())
       {
-        const auto lower = Utilities::string_to_double(
-          Utilities::split_string_list(prm.get("Material lower corner")));
-        const auto upper = Utilities::string_to_double(
-          Utilities::split_string_list(prm.get("Material upper corner")));
-        AssertThrow(lower.size() == dim && upper.size() == dim,
-                    ExcMessage("Custom problem/Material lower corner and "
-                               "Material upper corner need " +
-                               std::to_string(dim) + " values each."));
-        Point<dim> p1, p2;
+        const Point<dim> p1 =
+          read_point<dim>(prm.get("Material lower corner"),
+                          "Custom problem/Material lower corner");
+        const Point<dim> p2 =
+          read_point<dim>(prm.get("Material upper corner"),
+                          "Custom problem/Material upper corner");
         for (unsigned int d = 0; d < dim; ++d)
-          {
-            p1[d] = lower[d];
-            p2[d] = upper[d];
-            AssertThrow(p2[d] > p1[d],
-                        ExcMessage(
-                          "Custom problem/Material upper corner must be "
-                          "above Material lower corner."));
-          }
+          AssertThrow(p2[d] > p1[d],
+                      ExcMessage("Custom problem/Material upper corner must be "
+                                 "above Material lower corner."));
         region = BoundingBox<dim>(std::make_pair(p1, p2));
       }
     displacement.reset();
