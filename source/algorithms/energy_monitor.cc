@@ -1,5 +1,6 @@
 #include <mpm_otm/algorithms/energy_monitor.h>
 #include <mpm_otm/material_points/material_points.h>
+#include <mpm_otm/material_points/point_energy.h>
 #include <mpm_otm/materials/material_library.h>
 
 #include <sstream>
@@ -23,21 +24,15 @@ namespace MpmOtm
                             const MaterialLibrary<dim> &materials,
                             const double                local_supplied_work)
   {
-    using Layout = PropertyLayout<dim>;
     // kinetic, strain, supplied work, mass
     double sums[4] = {0., 0., local_supplied_work, 0.};
     for (const auto &particle : material_points.particle_handler())
       {
-        const auto properties = particle.get_properties();
-        sums[3] += properties[Layout::mass];
-        sums[0] +=
-          0.5 * properties[Layout::mass] *
-          Layout::get_vector(properties, Layout::velocity).norm_square();
-        sums[1] += materials[Layout::get_material_id(properties)].strain_energy(
-          Layout::get_deformation_gradient(properties),
-          Layout::get_stress(properties),
-          properties[Layout::initial_volume],
-          Layout::volume(properties));
+        const auto        properties = particle.get_properties();
+        const PointEnergy energy     = point_energy(properties, materials);
+        sums[0] += energy.kinetic;
+        sums[1] += energy.strain;
+        sums[3] += properties[PropertyLayout<dim>::mass];
       }
     Utilities::MPI::sum(ArrayView<const double>(sums, 4),
                         communicator,

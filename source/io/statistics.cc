@@ -2,6 +2,7 @@
 
 #include <mpm_otm/io/statistics.h>
 #include <mpm_otm/material_points/material_points.h>
+#include <mpm_otm/material_points/point_energy.h>
 #include <mpm_otm/materials/material_library.h>
 #include <mpm_otm/problems/problem.h>
 
@@ -34,12 +35,9 @@ namespace MpmOtm
           Layout::get_vector(properties, Layout::initial_position));
         const SymmetricTensor<2, dim> sigma = Layout::get_stress(properties);
 
-        sums[0] += 0.5 * m * v.norm_square();
-        sums[1] += materials[Layout::get_material_id(properties)].strain_energy(
-          Layout::get_deformation_gradient(properties),
-          sigma,
-          properties[Layout::initial_volume],
-          volume);
+        const PointEnergy energy = point_energy(properties, materials);
+        sums[0] += energy.kinetic;
+        sums[1] += energy.strain;
         sums[2] += m;
         sums[9] -= m * (gravity * (particle.get_location() - X));
         for (unsigned int d = 0; d < dim; ++d)
