@@ -177,11 +177,7 @@ namespace MpmOtm
   bool
   DruckerPrager<dim>::is_separated(const SymmetricTensor<2, 3> &stress) const
   {
-    const double vertex    = p_cut_off;
-    const double tolerance = 1e-12 * this->young;
-    return std::isfinite(vertex) &&
-           std::abs(trace(stress) / 3. - vertex) <= tolerance &&
-           deviator(stress).norm() <= tolerance;
+    return this->is_hydrostatic_at(stress, p_cut_off);
   }
 
 

@@ -18,27 +18,44 @@ namespace MpmOtm
 
 
     /**
-     * The principal values of @p stress, sorted by decreasing value: in
-     * closed form from the in-plane 2 x 2 block when z is a principal
-     * direction (every point of a 2D, plane-strain model), else deal.II's
-     * eigenvalues().
+     * The principal values of a stress for which z is a principal direction
+     * (every point of a 2D, plane-strain model), in closed form from its
+     * in-plane 2 x 2 block.
      */
-    std::array<double, 3>
-    principal_values(const SymmetricTensor<2, 3> &stress)
+    struct PlanePrincipalValues
     {
-      if (stress[0][2] != 0. || stress[1][2] != 0.)
-        return eigenvalues(stress);
-      const double centre    = 0.5 * (stress[0][0] + stress[1][1]);
-      const double half_diff = 0.5 * (stress[0][0] - stress[1][1]);
-      const double radius =
-        std::sqrt(half_diff * half_diff + stress[0][1] * stress[0][1]);
-      std::array<double, 3> values{
-        {centre + radius, centre - radius, stress[2][2]}};
-      if (values[2] > values[1])
-        std::swap(values[1], values[2]);
-      if (values[1] > values[0])
-        std::swap(values[0], values[1]);
-      return values;
+      /// sorted by decreasing value
+      std::array<double, 3> values;
+      /// which of (in-plane first, in-plane second, z) each value is
+      std::array<unsigned int, 3> source;
+      /// (s_xx - s_yy) / 2 and the radius of Mohr's circle
+      double half_difference;
+      double radius;
+    };
+
+    PlanePrincipalValues
+    plane_principal_values(const SymmetricTensor<2, 3> &stress)
+    {
+      PlanePrincipalValues result;
+      const double         centre = 0.5 * (stress[0][0] + stress[1][1]);
+      result.half_difference      = 0.5 * (stress[0][0] - stress[1][1]);
+      result.radius =
+        std::sqrt(result.half_difference * result.half_difference +
+                  stress[0][1] * stress[0][1]);
+      result.values = {
+        {centre + result.radius, centre - result.radius, stress[2][2]}};
+      result.source = {{0, 1, 2}};
+      if (result.values[2] > result.values[1])
+        {
+          std::swap(result.values[1], result.values[2]);
+          std::swap(result.source[1], result.source[2]);
+        }
+      if (result.values[1] > result.values[0])
+        {
+          std::swap(result.values[0], result.values[1]);
+          std::swap(result.source[0], result.source[1]);
+        }
+      return result;
     }
   } // namespace
 
@@ -80,13 +97,40 @@ namespace MpmOtm
                                           "the apex c cot(phi)");
     with_cut_off = sigma_t < apex_stress;
     prm.leave_subsection();
+
+    for (unsigned int i = 0; i < planes.size(); ++i)
+      planes[i] = make_plane(i);
+    candidates = {make_candidate({{0, 0, 0}}, 1, Return::plane),
+                  make_candidate({{0, 1, 0}}, 2, Return::right_edge),
+                  make_candidate({{0, 2, 0}}, 2, Return::left_edge)};
+    if (with_cut_off)
+      {
+        candidates.push_back(make_candidate({{3, 0, 0}}, 1, Return::cut_off));
+        candidates.push_back(
+          make_candidate({{3, 4, 0}}, 2, Return::cut_off_edge));
+        candidates.push_back(
+          make_candidate({{0, 3, 0}}, 2, Return::plane_and_cut_off));
+        candidates.push_back(
+          make_candidate({{0, 1, 3}}, 3, Return::right_edge_and_cut_off));
+        // The four planes through the corner of the left edge and the
+        // cut-off, three at a time (their flow vectors span the same cone).
+        for (const std::array<unsigned int, 3> corner :
+             {std::array<unsigned int, 3>{{0, 2, 3}},
+              std::array<unsigned int, 3>{{0, 3, 4}},
+              std::array<unsigned int, 3>{{2, 3, 4}},
+              std::array<unsigned int, 3>{{0, 2, 4}}})
+          candidates.push_back(
+            make_candidate(corner, 3, Return::left_edge_and_cut_off));
+        candidates.push_back(
+          make_candidate({{3, 4, 5}}, 3, Return::cut_off_apex));
+      }
   }
 
 
 
   template <int dim>
   typename MohrCoulomb<dim>::Plane
-  MohrCoulomb<dim>::plane(const unsigned int i) const
+  MohrCoulomb<dim>::make_plane(const unsigned int i) const
   {
     const double sp = sin_phi, ss = sin_psi, r = 2. * c * cos_phi;
     switch (i)
@@ -113,8 +157,77 @@ namespace MpmOtm
   MohrCoulomb<dim>::yield_function(
     const std::array<double, 3> &principal_stresses) const
   {
-    const Plane main = plane(0);
-    return dot(main.a, principal_stresses) - main.r;
+    return dot(planes[0].a, principal_stresses) - planes[0].r;
+  }
+
+
+
+  template <int dim>
+  typename MohrCoulomb<dim>::Candidate
+  MohrCoulomb<dim>::make_candidate(const std::array<unsigned int, 3> &active,
+                                   const unsigned int                 n_active,
+                                   const Return type) const
+  {
+    const double G      = this->mu_lame;
+    const double lambda = this->lambda_lame;
+    Candidate    candidate;
+    candidate.planes   = active;
+    candidate.n_planes = n_active;
+    candidate.type     = type;
+    candidate.inverse  = {};
+    candidate.flow     = {};
+    // flow_j = D n_j with D = lambda 1 1^T + 2 G I (principal space);
+    // M_ij = a_i . flow_j, so that M d gamma = f(trial).
+    double M[3][3];
+    for (unsigned int j = 0; j < n_active; ++j)
+      {
+        const Plane &plane = planes[active[j]];
+        const double trace = plane.n[0] + plane.n[1] + plane.n[2];
+        for (unsigned int k = 0; k < 3; ++k)
+          candidate.flow[j][k] = 2. * G * plane.n[k] + lambda * trace;
+      }
+    double largest = 0;
+    for (unsigned int i = 0; i < n_active; ++i)
+      for (unsigned int j = 0; j < n_active; ++j)
+        {
+          M[i][j]                 = dot(planes[active[i]].a, candidate.flow[j]);
+          largest                 = std::max(largest, std::abs(M[i][j]));
+          candidate.inverse[i][j] = (i == j) ? 1. : 0.;
+        }
+    // Gauss-Jordan elimination with partial pivoting; a pivot below 1e-12
+    // of the largest entry marks planes without a common return.
+    candidate.solvable = true;
+    for (unsigned int k = 0; k < n_active; ++k)
+      {
+        unsigned int pivot = k;
+        for (unsigned int i = k + 1; i < n_active; ++i)
+          if (std::abs(M[i][k]) > std::abs(M[pivot][k]))
+            pivot = i;
+        if (!(std::abs(M[pivot][k]) > 1e-12 * largest))
+          {
+            candidate.solvable = false;
+            return candidate;
+          }
+        std::swap(M[k], M[pivot]);
+        std::swap(candidate.inverse[k], candidate.inverse[pivot]);
+        const double scale = 1. / M[k][k];
+        for (unsigned int j = 0; j < n_active; ++j)
+          {
+            M[k][j] *= scale;
+            candidate.inverse[k][j] *= scale;
+          }
+        for (unsigned int i = 0; i < n_active; ++i)
+          if (i != k)
+            {
+              const double factor = M[i][k];
+              for (unsigned int j = 0; j < n_active; ++j)
+                {
+                  M[i][j] -= factor * M[k][j];
+                  candidate.inverse[i][j] -= factor * candidate.inverse[k][j];
+                }
+            }
+      }
+    return candidate;
   }
 
 
@@ -122,80 +235,46 @@ namespace MpmOtm
   template <int dim>
   bool
   MohrCoulomb<dim>::try_return(
-    const unsigned int          *active,
-    const unsigned int           n_active,
+    const Candidate             &candidate,
     const std::array<double, 3> &trial,
     const double                 tolerance,
     std::array<double, 3>       &result,
     std::array<double, 3>       &plastic_strain_increment) const
   {
-    const double G      = this->mu_lame;
-    const double lambda = this->lambda_lame;
-    // M_ij = a_i . D n_j with D = lambda 1 1^T + 2 G I (principal space);
-    // M d gamma = f(trial).
-    Plane                 planes[3];
-    std::array<double, 3> flow[3];
-    double                M[3][3], rhs[3];
+    if (!candidate.solvable)
+      return false;
+    const unsigned int n_active = candidate.n_planes;
+    double             violation[3];
     for (unsigned int i = 0; i < n_active; ++i)
       {
-        planes[i]       = plane(active[i]);
-        const double tr = planes[i].n[0] + planes[i].n[1] + planes[i].n[2];
-        for (unsigned int k = 0; k < 3; ++k)
-          flow[i][k] = 2. * G * planes[i].n[k] + lambda * tr;
-        rhs[i] = dot(planes[i].a, trial) - planes[i].r;
-      }
-    double largest = 0;
-    for (unsigned int i = 0; i < n_active; ++i)
-      for (unsigned int j = 0; j < n_active; ++j)
-        {
-          M[i][j] = dot(planes[i].a, flow[j]);
-          largest = std::max(largest, std::abs(M[i][j]));
-        }
-    // Gaussian elimination with partial pivoting.
-    unsigned int row[3] = {0, 1, 2};
-    for (unsigned int k = 0; k < n_active; ++k)
-      {
-        unsigned int pivot = k;
-        for (unsigned int i = k + 1; i < n_active; ++i)
-          if (std::abs(M[row[i]][k]) > std::abs(M[row[pivot]][k]))
-            pivot = i;
-        std::swap(row[k], row[pivot]);
-        if (!(std::abs(M[row[k]][k]) > 1e-12 * largest))
-          return false;
-        for (unsigned int i = k + 1; i < n_active; ++i)
-          {
-            const double factor = M[row[i]][k] / M[row[k]][k];
-            for (unsigned int j = k; j < n_active; ++j)
-              M[row[i]][j] -= factor * M[row[k]][j];
-            rhs[row[i]] -= factor * rhs[row[k]];
-          }
+        const Plane &plane = planes[candidate.planes[i]];
+        violation[i]       = dot(plane.a, trial) - plane.r;
       }
     double dgamma[3];
-    for (unsigned int k = n_active; k-- > 0;)
+    for (unsigned int i = 0; i < n_active; ++i)
       {
-        double sum = rhs[row[k]];
-        for (unsigned int j = k + 1; j < n_active; ++j)
-          sum -= M[row[k]][j] * dgamma[j];
-        dgamma[k] = sum / M[row[k]][k];
-        if (dgamma[k] < -tolerance / G)
+        dgamma[i] = 0.;
+        for (unsigned int j = 0; j < n_active; ++j)
+          dgamma[i] += candidate.inverse[i][j] * violation[j];
+        if (dgamma[i] < -tolerance / this->mu_lame)
           return false;
       }
 
     result                   = trial;
     plastic_strain_increment = {{0., 0., 0.}};
     for (unsigned int j = 0; j < n_active; ++j)
-      for (unsigned int k = 0; k < 3; ++k)
-        {
-          result[k] -= dgamma[j] * flow[j][k];
-          plastic_strain_increment[k] += dgamma[j] * planes[j].n[k];
-        }
+      {
+        const Plane &plane = planes[candidate.planes[j]];
+        for (unsigned int k = 0; k < 3; ++k)
+          {
+            result[k] -= dgamma[j] * candidate.flow[j][k];
+            plastic_strain_increment[k] += dgamma[j] * plane.n[k];
+          }
+      }
     // Admissible: every plane, and the order of the principal stresses.
     for (unsigned int i = 0; i < (with_cut_off ? 6u : 3u); ++i)
-      {
-        const Plane other = plane(i);
-        if (dot(other.a, result) - other.r > tolerance)
-          return false;
-      }
+      if (dot(planes[i].a, result) - planes[i].r > tolerance)
+        return false;
     return result[0] >= result[1] - tolerance &&
            result[1] >= result[2] - tolerance;
   }
@@ -220,49 +299,37 @@ namespace MpmOtm
     const double tolerance =
       1e-12 * std::max(scale, std::numeric_limits<double>::min());
 
-    struct Candidate
-    {
-      unsigned int planes[3];
-      unsigned int n_planes;
-      Return       type;
-    };
-    // de Souza Neto's choice of the edge to try first.
-    const bool right_first =
-      (1. - sin_psi) * trial[0] - 2. * trial[1] + (1. + sin_psi) * trial[2] >=
-      0.;
-    const Candidate right{{0, 1, 0}, 2, Return::right_edge};
-    const Candidate left{{0, 2, 0}, 2, Return::left_edge};
-    const Candidate candidates[] = {
-      {{0, 0, 0}, 1, Return::plane},
-      right_first ? right : left,
-      right_first ? left : right,
-      // With the cut-off only:
-      {{3, 0, 0}, 1, Return::cut_off},
-      {{3, 4, 0}, 2, Return::cut_off_edge},
-      {{0, 3, 0}, 2, Return::plane_and_cut_off},
-      {{0, 1, 3}, 3, Return::right_edge_and_cut_off},
-      // The four planes through the corner of the left edge and the cut-off,
-      // three at a time (their flow vectors span the same cone).
-      {{0, 2, 3}, 3, Return::left_edge_and_cut_off},
-      {{0, 3, 4}, 3, Return::left_edge_and_cut_off},
-      {{2, 3, 4}, 3, Return::left_edge_and_cut_off},
-      {{0, 2, 4}, 3, Return::left_edge_and_cut_off},
-      {{3, 4, 5}, 3, Return::cut_off_apex}};
-    const unsigned int n_candidates = with_cut_off ? 12 : 3;
-
+    // With psi = 0 and no cut-off, the returns to the planes and edges keep
+    // the mean stress (their flow vectors have no trace), and no admissible
+    // stress has a mean stress above the apex: a trial beyond it can only
+    // return to the apex, and the candidates are skipped.
+    const bool beyond_apex = !with_cut_off && sin_psi == 0. &&
+                             trial[0] + trial[1] + trial[2] > 3. * apex_stress;
     std::array<double, 3> plastic_strain_increment;
-    for (unsigned int i = 0; i < n_candidates; ++i)
-      if (try_return(candidates[i].planes,
-                     candidates[i].n_planes,
-                     trial,
-                     tolerance,
-                     principal_stresses,
-                     plastic_strain_increment))
-        {
-          plastic_strain += std::sqrt(
-            2. / 3. * dot(plastic_strain_increment, plastic_strain_increment));
-          return candidates[i].type;
-        }
+    if (!beyond_apex)
+      {
+        // de Souza Neto's choice of the edge to try first: the right edge is
+        // candidates[1], the left edge candidates[2].
+        const bool right_first = (1. - sin_psi) * trial[0] - 2. * trial[1] +
+                                   (1. + sin_psi) * trial[2] >=
+                                 0.;
+        for (unsigned int i = 0; i < candidates.size(); ++i)
+          {
+            const Candidate &candidate =
+              candidates[(right_first || i == 0 || i > 2) ? i : 3 - i];
+            if (try_return(candidate,
+                           trial,
+                           tolerance,
+                           principal_stresses,
+                           plastic_strain_increment))
+              {
+                plastic_strain += std::sqrt(
+                  2. / 3. *
+                  dot(plastic_strain_increment, plastic_strain_increment));
+                return candidate.type;
+              }
+          }
+      }
 
     // No return to planes, edges or corners: the apex of the pyramid (de
     // Souza Neto), or that of the cut-off, with the elastic strain removed as
@@ -293,57 +360,54 @@ namespace MpmOtm
   MohrCoulomb<dim>::return_stress(SymmetricTensor<2, 3> &stress,
                                   double                &plastic_strain) const
   {
-    // The principal stresses first (closed form, sorted by decreasing
-    // value): most points are elastic or return to the apex, where the
-    // eigenvectors are not needed.
-    const std::array<double, 3> trial     = principal_values(stress);
-    std::array<double, 3>       principal = trial;
-    const Return type = return_principal_stresses(principal, plastic_strain);
-    if (type == Return::elastic)
-      return type;
-    if (principal[0] == principal[1] && principal[1] == principal[2])
+    // The principal stresses first (sorted by decreasing value): most
+    // points are elastic or return to the apex, where the eigenvectors are
+    // not needed.
+    const auto hydrostatic = [&](const std::array<double, 3> &principal) {
+      if (principal[0] != principal[1] || principal[1] != principal[2])
+        return false;
+      stress = principal[0] * unit_symmetric_tensor<3>();
+      return true;
+    };
+    if (stress[0][2] != 0. || stress[1][2] != 0.)
       {
-        stress = principal[0] * unit_symmetric_tensor<3>();
-        return type;
-      }
-    // sigma = sum_i sigma_i v_i v_i^T with the trial's eigenvectors, written
-    // as a correction of the trial stress.
-    std::array<Tensor<1, 3>, 3> directions;
-    if (stress[0][2] == 0. && stress[1][2] == 0.)
-      {
-        // Plane strain: z is a principal direction, the in-plane ones
-        // follow from the 2 x 2 block in closed form.
-        const double angle =
-          0.5 * std::atan2(2. * stress[0][1], stress[0][0] - stress[1][1]);
-        Tensor<1, 3> first, second, z;
-        first[0]  = std::cos(angle);
-        first[1]  = std::sin(angle);
-        second[0] = -first[1];
-        second[1] = first[0];
-        z[2]      = 1.;
-        // Match each direction to its principal stress.
-        const double s_first  = first * (stress * first);
-        const double s_second = second * (stress * second);
-        const std::array<std::pair<double, Tensor<1, 3>>, 3> pairs{
-          {{s_first, first}, {s_second, second}, {stress[2][2], z}}};
-        std::array<unsigned int, 3> order{{0, 1, 2}};
-        std::sort(order.begin(),
-                  order.end(),
-                  [&](const unsigned int a, const unsigned int b) {
-                    return pairs[a].first > pairs[b].first;
-                  });
-        for (unsigned int i = 0; i < 3; ++i)
-          directions[i] = pairs[order[i]].second;
-      }
-    else
-      {
+        const std::array<double, 3> trial     = eigenvalues(stress);
+        std::array<double, 3>       principal = trial;
+        const Return                type =
+          return_principal_stresses(principal, plastic_strain);
+        if (type == Return::elastic || hydrostatic(principal))
+          return type;
+        // sigma = sum_i sigma_i v_i v_i^T with the trial's eigenvectors,
+        // written as a correction of the trial stress.
         const auto eigen = eigenvectors(stress);
         for (unsigned int i = 0; i < 3; ++i)
-          directions[i] = eigen[i].second;
+          stress += (principal[i] - trial[i]) *
+                    symmetrize(outer_product(eigen[i].second, eigen[i].second));
+        return type;
       }
+
+    // Plane strain: z is a principal direction, and the in-plane ones
+    // follow in closed form.
+    const PlanePrincipalValues trial     = plane_principal_values(stress);
+    std::array<double, 3>      principal = trial.values;
+    const Return type = return_principal_stresses(principal, plastic_strain);
+    if (type == Return::elastic || hydrostatic(principal))
+      return type;
+    double change[3];
     for (unsigned int i = 0; i < 3; ++i)
-      stress += (principal[i] - trial[i]) *
-                symmetrize(outer_product(directions[i], directions[i]));
+      change[trial.source[i]] = principal[i] - trial.values[i];
+    // The projector onto the first in-plane direction,
+    // P = (S - sigma_second I) / (sigma_first - sigma_second) of the in-plane
+    // block S (the x axis if the two are equal); the second's is I - P.
+    const double p_xx = (trial.radius > 0.) ?
+                          0.5 + 0.5 * trial.half_difference / trial.radius :
+                          1.;
+    const double p_xy =
+      (trial.radius > 0.) ? 0.5 * stress[0][1] / trial.radius : 0.;
+    stress[0][0] += change[0] * p_xx + change[1] * (1. - p_xx);
+    stress[1][1] += change[0] * (1. - p_xx) + change[1] * p_xx;
+    stress[0][1] += (change[0] - change[1]) * p_xy;
+    stress[2][2] += change[2];
     return type;
   }
 
@@ -373,11 +437,8 @@ namespace MpmOtm
   bool
   MohrCoulomb<dim>::is_separated(const SymmetricTensor<2, 3> &stress) const
   {
-    const double vertex    = (with_cut_off ? sigma_t : apex_stress);
-    const double tolerance = 1e-12 * this->young;
-    return std::isfinite(vertex) &&
-           std::abs(trace(stress) / 3. - vertex) <= tolerance &&
-           deviator(stress).norm() <= tolerance;
+    return this->is_hydrostatic_at(stress,
+                                   (with_cut_off ? sigma_t : apex_stress));
   }
 
 

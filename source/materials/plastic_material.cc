@@ -88,15 +88,28 @@ namespace MpmOtm
 
 
   template <int dim>
+  bool
+  PlasticMaterial<dim>::is_hydrostatic_at(const SymmetricTensor<2, 3> &stress,
+                                          const double vertex) const
+  {
+    const double tolerance = 1e-12 * this->young;
+    for (unsigned int i = 0; i < 3; ++i)
+      if (!(std::abs(stress[i][i] - vertex) <= tolerance))
+        return false;
+    return std::abs(stress[0][1]) <= tolerance &&
+           std::abs(stress[0][2]) <= tolerance &&
+           std::abs(stress[1][2]) <= tolerance;
+  }
+
+
+
+  template <int dim>
   SymmetricTensor<2, 3>
   PlasticMaterial<dim>::elastic_trial_stress(
     const SymmetricTensor<2, 3> &stress,
     const Tensor<2, 3>          &velocity_gradient,
     const double                 dt) const
   {
-    const SymmetricTensor<2, 3> strain_increment =
-      dt * symmetrize(velocity_gradient);
-    const double volumetric_increment = trace(strain_increment);
     // The rotation part of Eq. 2.4, sigma + W sigma - sigma W, integrated
     // with the Hughes-Winget rotation R = (I - W/2)^-1 (I + W/2): R is
     // orthogonal for every skew W and equals I + W + O(W^2), so that the
@@ -106,11 +119,8 @@ namespace MpmOtm
     // R = I + (W + W^2 / 2) / (1 + |w|^2 / 4), |w|^2 = -tr(W^2) / 2.
     // The velocity gradient of a 2D (1D) model vanishes out of the plane
     // (line), so W and R - I live in the leading dim x dim block.
-    Tensor<2, dim> spin_increment;
-    for (unsigned int i = 0; i < dim; ++i)
-      for (unsigned int j = 0; j < dim; ++j)
-        spin_increment[i][j] =
-          0.5 * dt * (velocity_gradient[i][j] - velocity_gradient[j][i]);
+    // (Plain arrays: this is the hot path of every plastic model, and
+    // SymmetricTensor's element access and temporaries are slower.)
     for (unsigned int i = 0; i < 3; ++i)
       for (unsigned int j = std::max(i + 1, static_cast<unsigned int>(dim));
            j < 3;
@@ -118,33 +128,75 @@ namespace MpmOtm
         Assert(velocity_gradient[i][j] == velocity_gradient[j][i],
                ExcMessage("The spin of a plane-strain (uniaxial-strain) "
                           "point must lie in its plane (line)."));
-    const Tensor<2, dim> spin_squared = spin_increment * spin_increment;
-    const Tensor<2, dim> rotation =
-      Tensor<2, dim>(unit_symmetric_tensor<dim>()) +
-      (spin_increment + 0.5 * spin_squared) / (1. - trace(spin_squared) / 8.);
-    // R sigma R^T of the old stress sigma; R = I outside the leading block.
-    // (Plain tensors: SymmetricTensor's element access is slower.)
-    const Tensor<2, 3> old_stress(stress);
-    Tensor<2, 3>       rotated = old_stress;
-    for (unsigned int i = 0; i < dim; ++i)
+    double old_stress[3][3];
+    for (unsigned int i = 0; i < 3; ++i)
+      for (unsigned int j = 0; j < 3; ++j)
+        old_stress[i][j] = stress[i][j];
+    double rotation[dim][dim];
+    if constexpr (dim == 2)
+      {
+        // W = [[0, w], [-w, 0]], W^2 = -w^2 I: R = [[a, b], [-b, a]] with
+        // a = (1 - w^2 / 4) / (1 + w^2 / 4), b = w / (1 + w^2 / 4).
+        const double w =
+          0.5 * dt * (velocity_gradient[0][1] - velocity_gradient[1][0]);
+        const double factor = 1. / (1. + 0.25 * w * w);
+        rotation[0][0] = rotation[1][1] = (1. - 0.25 * w * w) * factor;
+        rotation[0][1]                  = w * factor;
+        rotation[1][0]                  = -w * factor;
+      }
+    else
+      {
+        double spin[dim][dim];
+        for (unsigned int i = 0; i < dim; ++i)
+          for (unsigned int j = 0; j < dim; ++j)
+            spin[i][j] =
+              0.5 * dt * (velocity_gradient[i][j] - velocity_gradient[j][i]);
+        double spin_squared[dim][dim];
+        double trace_spin_squared = 0;
+        for (unsigned int i = 0; i < dim; ++i)
+          for (unsigned int j = 0; j < dim; ++j)
+            {
+              spin_squared[i][j] = 0;
+              for (unsigned int k = 0; k < dim; ++k)
+                spin_squared[i][j] += spin[i][k] * spin[k][j];
+            }
+        for (unsigned int i = 0; i < dim; ++i)
+          trace_spin_squared += spin_squared[i][i];
+        const double factor = 1. / (1. - trace_spin_squared / 8.);
+        for (unsigned int i = 0; i < dim; ++i)
+          for (unsigned int j = 0; j < dim; ++j)
+            rotation[i][j] = ((i == j) ? 1. : 0.) +
+                             factor * (spin[i][j] + 0.5 * spin_squared[i][j]);
+      }
+
+    const double volumetric_increment =
+      dt * (velocity_gradient[0][0] + velocity_gradient[1][1] +
+            velocity_gradient[2][2]);
+    const double          two_mu = 2. * this->mu_lame;
+    SymmetricTensor<2, 3> trial;
+    for (unsigned int i = 0; i < 3; ++i)
       for (unsigned int j = i; j < 3; ++j)
         {
-          double value = 0;
+          // R sigma R^T of the old stress sigma; R = I outside the leading
+          // block.
+          double rotated = 0;
           if (j < dim)
             for (unsigned int k = 0; k < dim; ++k)
               for (unsigned int l = 0; l < dim; ++l)
-                value += rotation[i][k] * old_stress[k][l] * rotation[j][l];
-          else
+                rotated += rotation[i][k] * old_stress[k][l] * rotation[j][l];
+          else if (i < dim)
             for (unsigned int k = 0; k < dim; ++k)
-              value += rotation[i][k] * old_stress[k][j];
-          rotated[i][j] = value;
-          rotated[j][i] = value;
+              rotated += rotation[i][k] * old_stress[k][j];
+          else
+            rotated = old_stress[i][j];
+          const double strain_increment =
+            0.5 * dt * (velocity_gradient[i][j] + velocity_gradient[j][i]);
+          trial[i][j] =
+            rotated + two_mu * strain_increment -
+            volumetric_increment * old_stress[i][j] +
+            ((i == j) ? this->lambda_lame * volumetric_increment : 0.);
         }
-    return symmetrize(rotated) +
-           this->lambda_lame * volumetric_increment *
-             unit_symmetric_tensor<3>() +
-           2. * this->mu_lame * strain_increment -
-           volumetric_increment * stress;
+    return trial;
   }
 
 

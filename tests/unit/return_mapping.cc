@@ -1072,6 +1072,7 @@ main(int argc, char **argv)
   test_von_mises();
   test_drucker_prager();
   test_mohr_coulomb_regions();
+  test_mohr_coulomb_random("0", "");
   test_mohr_coulomb_random("10", "");
   test_mohr_coulomb_random("30", "");
   test_mohr_coulomb_random("10", "0.5");

@@ -102,7 +102,7 @@ namespace MpmOtm
 
     /**
      * True for the hydrostatic stress of the apex (of the cut-off, if
-     * set), to 1e-12 E.
+     * set), every component to 1e-12 E.
      */
     bool
     is_separated(const SymmetricTensor<2, 3> &stress) const override;

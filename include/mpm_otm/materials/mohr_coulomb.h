@@ -4,6 +4,7 @@
 #include <mpm_otm/materials/plastic_material.h>
 
 #include <array>
+#include <vector>
 
 namespace MpmOtm
 {
@@ -38,6 +39,9 @@ namespace MpmOtm
    * - apex: the hydrostatic stress c cot(phi), the plastic strain
    *   being the elastic strain removed, as in de Souza Neto, when neither
    *   the plane nor the edges give a valid state (needs phi > 0).
+   *   With psi = 0 and no cut-off, a trial whose mean stress is above the
+   *   apex goes there directly: the plane and edge returns keep the mean
+   *   stress, and no admissible stress has a larger one.
    * A return is accepted when its multipliers are >= 0 and its result
    * satisfies every plane (the six Mohr-Coulomb planes reduce to the three
    * above and the order of the principal stresses, the cut-off to
@@ -142,7 +146,7 @@ namespace MpmOtm
 
     /**
      * True for the hydrostatic stress of the apex (of the cut-off, if
-     * set), to 1e-12 E.
+     * set), every component to 1e-12 E.
      */
     bool
     is_separated(const SymmetricTensor<2, 3> &stress) const override;
@@ -186,26 +190,59 @@ namespace MpmOtm
     };
 
     /**
-     * The planes: 0, 1, 2 the Mohr-Coulomb planes of the pairs (1, 3),
-     * (1, 2), (2, 3); 3, 4, 5 the cut-off planes sigma_1, sigma_2, sigma_3
-     * = sigma_t.
+     * A return tried in return_principal_stresses(): its active planes and,
+     * computed once from the material constants in parse_parameters(), the
+     * inverse of its matrix M_ij = a_i . D n_j (D the elastic law in
+     * principal space) and the stress change per multiplier, D n_j.
      */
-    Plane
-    plane(const unsigned int i) const;
+    struct Candidate
+    {
+      std::array<unsigned int, 3>          planes;
+      unsigned int                         n_planes;
+      Return                               type;
+      bool                                 solvable;
+      std::array<std::array<double, 3>, 3> inverse;
+      std::array<std::array<double, 3>, 3> flow;
+    };
 
     /**
-     * Try the return to the planes @p active (@p n_active of them, at most
-     * 3) from the trial @p trial; on success (multipliers >= 0, result
-     * admissible) set @p result and the plastic strain increment
-     * @p plastic_strain_increment (principal) and return true.
+     * The plane @p i of the admissible set: 0, 1, 2 the Mohr-Coulomb planes
+     * of the pairs (1, 3), (1, 2), (2, 3); 3, 4, 5 the cut-off planes
+     * sigma_1, sigma_2, sigma_3 = sigma_t.
+     */
+    Plane
+    make_plane(const unsigned int i) const;
+
+    /**
+     * The candidate returning to @p n_planes of the planes @p planes.
+     */
+    Candidate
+    make_candidate(const std::array<unsigned int, 3> &planes,
+                   const unsigned int                 n_planes,
+                   const Return                       type) const;
+
+    /**
+     * Try the return of @p candidate from the trial @p trial; on success
+     * (multipliers >= 0, result admissible) set @p result and the plastic
+     * strain increment @p plastic_strain_increment (principal) and return
+     * true.
      */
     bool
-    try_return(const unsigned int          *active,
-               const unsigned int           n_active,
+    try_return(const Candidate             &candidate,
                const std::array<double, 3> &trial,
                const double                 tolerance,
                std::array<double, 3>       &result,
                std::array<double, 3>       &plastic_strain_increment) const;
+
+    /// The six planes of make_plane().
+    std::array<Plane, 6> planes;
+
+    /**
+     * The returns in the order they are tried: the main plane, the right
+     * edge, the left edge, then (with the cut-off only) the returns that
+     * involve the cut-off.
+     */
+    std::vector<Candidate> candidates;
 
     double phi          = 0;
     double psi          = 0;

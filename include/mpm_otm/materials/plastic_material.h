@@ -135,6 +135,17 @@ namespace MpmOtm
                                 const std::string &model) const;
 
     /**
+     * Whether every component of @p stress is within 1e-12 E of that of the
+     * hydrostatic stress @p vertex I (never for an infinite @p vertex): the
+     * test of is_separated() for a model whose apex is @p vertex. It
+     * compares one component at a time, so that most stresses are rejected
+     * after the first (it runs for every point in every step).
+     */
+    bool
+    is_hydrostatic_at(const SymmetricTensor<2, 3> &stress,
+                      const double                 vertex) const;
+
+    /**
      * @p value as text with up to 6 significant digits, for messages.
      */
     static std::string
