@@ -161,12 +161,18 @@ end"
         done
       } | tee "$data/G4-run-out.dat"
       {
-        echo "# cells_across_L0 failure_surface_angle_deg (a = 1, t = 0.05 s; Rankine 60)"
-        for cells in 20 40 80; do
-          dt=$(awk "BEGIN{print 1e-4 * 20 / $cells}")
-          run G4-column-collapse.prm "subsection Mesh
+        echo "# psi cells_across_L0 failure_surface_angle_deg at 50 % 20 % 10 % of the row's largest speed (a = 1, t = 0.05 s; Coulomb/Rankine 45 + phi/2 = 60, Arthur 45 + (phi + psi)/4, Roscoe 45 + psi/2)"
+        for psi in 0 30; do
+          for cells in 20 40 80; do
+            dt=$(awk "BEGIN{print 1e-4 * 20 / $cells}")
+            run G4-column-collapse.prm "subsection Mesh
  set Upper corner = 0.3, 0.24
  set Subdivisions = $((3 * cells / 2)), $((6 * cells / 5))
+end
+subsection Material
+ subsection Drucker-Prager
+  set Dilatancy angle = $psi
+ end
 end
 subsection Time
  set End time = 0.05
@@ -175,11 +181,16 @@ end
 subsection Output
  set Interval = $(awk "BEGIN{print int(0.05 / $dt + 0.5)}")
 end"
-          last=$(ls run/particles-*.csv | tail -1)
-          echo "$cells $(awk -v L0=0.2 -v H0=0.2 -v cell="$(awk "BEGIN{print 0.2 / $cells}")" -f "$root/doc/scripts/failure_surface.awk" "$last" | cut -d' ' -f2)"
-          if [ "$cells" = 40 ]; then
-            awk -F, 'NR > 1 { printf "%.4g %.4g %.3g\n", $4, $5, sqrt($8 * $8 + $9 * $9) }' "$last" > "$data/G4-failure-speed.dat"
-          fi
+            last=$(ls run/particles-*.csv | tail -1)
+            angles=""
+            for fraction in 0.5 0.2 0.1; do
+              angles="$angles $(awk -v L0=0.2 -v H0=0.2 -v cell="$(awk "BEGIN{print 0.2 / $cells}")" -v fraction=$fraction -f "$root/doc/scripts/failure_surface.awk" "$last" | cut -d' ' -f2)"
+            done
+            echo "$psi $cells$angles"
+            if [ "$psi" = 0 ] && [ "$cells" = 40 ]; then
+              awk -F, 'NR > 1 { printf "%.4g %.4g %.3g\n", $4, $5, sqrt($8 * $8 + $9 * $9) }' "$last" > "$data/G4-failure-speed.dat"
+            fi
+          done
         done
       } | tee "$data/G4-failure-angle.dat"
       ;;

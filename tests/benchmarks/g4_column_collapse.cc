@@ -6,11 +6,15 @@
 //    across (the angle is independent of the size; doc/benchmarks.md has
 //    the prm file's column with 20, 40 and 80 cells), at t = 0.035 s (the
 //    prm file's 0.05 s scaled with sqrt(H0 / g)): in every row of points
-//    the middle of the shear band is where the speed first rises through
-//    half of the row's largest speed; the least-squares line through these
-//    points (rows below H0 - 2 cells, band inside the column) is printed
-//    beside Rankine's 45 + phi/2 = 60 deg; BENCHMARKS.md asks for 5 deg,
-//    which this measure does not reach (65 deg, see below).
+//    the x where the speed first rises through a fraction of the row's
+//    largest speed, and the least-squares line through these points (rows
+//    below H0 - 2 cells, inside the column). The edge of the static region
+//    (10 %), where experiments draw the failure surface, must rise at an
+//    angle that shear-band theory allows for psi = 0: between Roscoe's
+//    45 + psi/2 = 45 deg and Coulomb's 45 + phi/2 = 60 deg (Vermeer 1990).
+//    The middle of the band (50 %) is printed beside Coulomb's 60 deg, which
+//    BENCHMARKS.md asks for to 5 deg and which it does not reach (65 deg;
+//    doc/benchmarks.md, G4, says why).
 //  - For a = 0.5 (H0 = 0.1, L0 = 0.2, 10 cells across, 1 s, when the
 //    deposit is at rest) the top is undisturbed: the highest point lies
 //    within half a cell of its initial height (H_inf = H0).
@@ -28,13 +32,15 @@ namespace
 {
   /**
    * The angle of the failure surface of the column (width @p L0, height
-   * @p H0, cells of @p h) at the current state of @p points.
+   * @p H0, cells of @p h) at the current state of @p points, where the
+   * speed rises through @p fraction of each row's largest speed.
    */
   double
   failure_angle(const MaterialPoints<2> &points,
                 const double             L0,
                 const double             H0,
-                const double             h)
+                const double             h,
+                const double             fraction)
   {
     using Layout = PropertyLayout<2>;
     // Rows of points by their initial height: (X, speed) sorted by X.
@@ -60,11 +66,11 @@ namespace
         for (const auto &point : speeds)
           largest = std::max(largest, point.second);
         for (unsigned int i = 1; i < speeds.size(); ++i)
-          if (speeds[i - 1].second < 0.5 * largest &&
-              speeds[i].second >= 0.5 * largest)
+          if (speeds[i - 1].second < fraction * largest &&
+              speeds[i].second >= fraction * largest)
             {
               const double x = speeds[i - 1].first +
-                               (0.5 * largest - speeds[i - 1].second) /
+                               (fraction * largest - speeds[i - 1].second) /
                                  (speeds[i].second - speeds[i - 1].second) *
                                  (speeds[i].first - speeds[i - 1].first);
               if (x > 0.5 * h && x < L0 - 0.5 * h)
@@ -100,15 +106,22 @@ main(int argc, char **argv)
               " set Write particle CSV = false\nend\n",
       "output-G4-angle");
     simulator->run();
-    const double angle =
-      failure_angle(simulator->material_points(), 0.1, 0.1, h);
-    deallog << "failure surface at " << std::fixed << std::setprecision(0)
-            << angle << " deg (Rankine 45 + phi/2 = 60 deg)"
+    const double middle =
+      failure_angle(simulator->material_points(), 0.1, 0.1, h, 0.5);
+    const double edge =
+      failure_angle(simulator->material_points(), 0.1, 0.1, h, 0.1);
+    deallog << std::fixed << std::setprecision(0)
+            << "failure surface: edge of the static region at " << edge
+            << " deg (psi = 0: Roscoe 45 to Coulomb 60 deg), middle of the "
+            << "band at " << middle << " deg (Coulomb 45 + phi/2 = 60 deg)"
             << std::defaultfloat << std::endl;
-    // Not asserted: the band centre rises at 64-67 deg on 20 to 80 cells
-    // across the column, 5-7 deg steeper than Rankine's 60 deg
-    // (doc/benchmarks.md, G4, says so); the number is pinned by the output.
-    check(angle > 45. && angle < 90.,
+    check(edge >= 45. && edge <= 60.,
+          "the edge of the static region is not between Roscoe's and "
+          "Coulomb's angle");
+    // The middle of the band: not asserted against 60 deg (it rises at
+    // 64-67 deg on 20 to 80 cells across the column; doc/benchmarks.md, G4,
+    // says why); the number is pinned by the output.
+    check(middle > 45. && middle < 90.,
           "the failure surface does not rise from the toe into the column");
   }
   {
