@@ -2,6 +2,7 @@
 #include <deal.II/base/utilities.h>
 #include <deal.II/grid/grid_in.h>
 
+#include <mpm_otm/base/exception_message.h>
 #include <mpm_otm/grid/gmsh_file.h>
 
 #include <algorithm>
@@ -58,37 +59,25 @@ namespace MpmOtm
     }
 
     /**
-     * The text of a deal.II exception without its banner and stack trace.
+     * The text of an exception on one line: the Gmsh reader's messages are
+     * indented over several.
      */
     std::string
-    message_of(const std::exception &error)
+    one_line_message_of(const std::exception &error)
     {
-      if (const auto *exception = dynamic_cast<const ExceptionBase *>(&error))
-        {
-          std::ostringstream text;
-          exception->print_info(text);
-          std::string info  = text.str();
-          const auto  begin = info.find_first_not_of(" \n");
-          const auto  end   = info.find_last_not_of(" \n");
-          info              = (begin == std::string::npos) ?
-                                std::string() :
-                                info.substr(begin, end - begin + 1);
-          // One line: the reader's messages are indented over several.
-          std::string line;
-          bool        space = false;
-          for (const char c : info)
-            if (c == '\n' || c == ' ')
-              space = true;
-            else
-              {
-                if (space && !line.empty())
-                  line += ' ';
-                line += c;
-                space = false;
-              }
-          return line;
-        }
-      return error.what();
+      std::string line;
+      bool        space = false;
+      for (const char c : message_of(error))
+        if (c == '\n' || c == ' ')
+          space = true;
+        else
+          {
+            if (space && !line.empty())
+              line += ' ';
+            line += c;
+            space = false;
+          }
+      return line;
     }
   } // namespace
 
@@ -423,10 +412,10 @@ namespace MpmOtm
       }
     catch (const std::exception &error)
       {
-        fail(
-          "could not be read by deal.II's Gmsh reader: " + message_of(error) +
-          " (a tagged line or surface element must be a boundary face "
-          "of a cell)");
+        fail("could not be read by deal.II's Gmsh reader: " +
+             one_line_message_of(error) +
+             " (a tagged line or surface element must be a boundary face "
+             "of a cell)");
       }
     if (triangulation.n_global_active_cells() != n_cells())
       fail("gave " + std::to_string(triangulation.n_global_active_cells()) +

@@ -1,0 +1,303 @@
+// Simulator: the parameters (declare_parameters, parse_parameters) and
+// read_dimension(). setup.cc builds the run, simulator.cc runs it.
+
+
+#include <mpm_otm/algorithms/advected_grid.h>
+#include <mpm_otm/algorithms/advected_knots.h>
+#include <mpm_otm/algorithms/fixed_grid.h>
+#include <mpm_otm/algorithms/nodal_update.h>
+#include <mpm_otm/algorithms/optimal_transportation_update.h>
+#include <mpm_otm/base/plugins.h>
+#include <mpm_otm/boundary_conditions/boundary_conditions.h>
+#include <mpm_otm/grid/background_grid.h>
+#include <mpm_otm/grid_system/local_damping.h>
+#include <mpm_otm/grid_system/mass_matrix.h>
+#include <mpm_otm/io/checkpoint.h>
+#include <mpm_otm/io/output_writer.h>
+#include <mpm_otm/material_points/material_points.h>
+#include <mpm_otm/materials/material_library.h>
+#include <mpm_otm/problems/body.h>
+#include <mpm_otm/problems/problem.h>
+#include <mpm_otm/shape_functions/b_splines.h>
+#include <mpm_otm/shape_functions/shape_functions.h>
+#include <mpm_otm/simulator/simulator.h>
+
+#include <cmath>
+#include <filesystem>
+
+namespace MpmOtm
+{
+  unsigned int
+  read_dimension(const std::string &filename)
+  {
+    ParameterHandler prm;
+    prm.declare_entry("Dimension",
+                      "1",
+                      Patterns::Integer(1, 3),
+                      "Space dimension: 1, 2 or 3.");
+    if (!filename.empty())
+      {
+        AssertThrow(std::filesystem::is_regular_file(filename),
+                    ExcMessage("Parameter file <" + filename +
+                               "> does not exist or is not a file."));
+        prm.parse_input(filename, "", true);
+      }
+    return prm.get_integer("Dimension");
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::declare_parameters(ParameterHandler      &prm,
+                                     const SubsectionNames &names)
+  {
+    SubsectionNames::declare_parameters(prm);
+    prm.declare_entry("Dimension",
+                      "1",
+                      Patterns::Integer(1, 3),
+                      "Space dimension: 1, 2 or 3.");
+    prm.declare_entry("Problem",
+                      "vibrating bar",
+                      Patterns::Selection(
+                        PluginRegistry<Problem<dim>>::selection()),
+                      "Benchmark or user problem:" +
+                        PluginRegistry<Problem<dim>>::documentation());
+    prm.declare_entry(
+      "Method",
+      "MPM",
+      Patterns::Selection("MPM|OTM|Unified"),
+      "MPM: material-point method, shape functions on the fixed background "
+      "grid (journal Alg. 1; nodal update from 'Update scheme'). "
+      "OTM: optimal transportation meshfree method (journal Alg. 2): the "
+      "grid's vertices move with the material every step, nodal update of "
+      "Eq. 51, particle velocities from the displacements; needs linearly "
+      "complete shape functions. "
+      "Unified: the unified approach (journal Alg. 3): the grid moves as in "
+      "OTM, the particle update is that of 'Update scheme'; the journal uses "
+      "it with Mass matrix = consistent. OTM and Unified mesh only the "
+      "material domain.");
+    prm.declare_entry(
+      "Update scheme",
+      "automatic",
+      Patterns::Selection("automatic|" +
+                          PluginRegistry<NodalUpdate<dim>>::selection()),
+      "Nodal update of Method = MPM and Unified:" +
+        PluginRegistry<NodalUpdate<dim>>::documentation() +
+        ". automatic: MUSL for MPM (USL, the sources' update, gained energy "
+        "and blew up on the user problems G1-G3, where MUSL ran: manual, "
+        "'Your own problem'), USL for Unified (journal Alg. 3). OTM has its "
+        "own update (Eq. 51) and takes no other.");
+    prm.declare_entry("Shape functions",
+                      "linear",
+                      Patterns::Selection(
+                        PluginRegistry<ShapeFunctions<dim>>::selection()),
+                      "Shape-function family:" +
+                        PluginRegistry<ShapeFunctions<dim>>::documentation());
+    prm.declare_entry("Mass matrix",
+                      "lumped",
+                      Patterns::Selection(
+                        PluginRegistry<MassMatrix<dim>>::selection()),
+                      "Use of the mass matrix:" +
+                        PluginRegistry<MassMatrix<dim>>::documentation());
+    prm.declare_entry(
+      "Deactivation threshold",
+      "0",
+      Patterns::Double(0.),
+      "Deactivate, in every step, the functions whose diagonal mass-matrix "
+      "entry M_ii = sum_p m_p phi_i(x_p)^2 (a mass, in the units of the "
+      "problem) is below this value: their coefficients are set to zero, as "
+      "for functions without material (thesis Sect. 5.2, which uses 1e-2 for "
+      "the soil column of Table 4.6). It stabilises nearly empty cells at "
+      "the cost of an error near them. 0: no deactivation.");
+
+    prm.enter_subsection("Time");
+    prm.declare_entry("End time",
+                      "1e-3",
+                      Patterns::Double(0.),
+                      "Simulated time T (s).");
+    prm.declare_entry(
+      "Time step",
+      "1e-5",
+      Patterns::Anything(),
+      "Time step dt (s), a positive number or 'auto'. It must not exceed the "
+      "stable time step 2 / omega_max of the discretisation, which the "
+      "program estimates at the start (omega_max^2 the largest eigenvalue "
+      "of M^-1 K at the initial configuration; manual, 'Time step') and "
+      "prints. auto: dt = Courant factor x 2 / omega_max.");
+    prm.declare_entry(
+      "Courant factor",
+      "0.5",
+      Patterns::Double(0., 1.),
+      "With Time step = auto, the fraction of the stable time step "
+      "2 / omega_max used, in (0, 1]. Large deformations change the "
+      "stable time step during a run, so keep a margin.");
+    prm.declare_entry(
+      "Energy growth limit",
+      "1",
+      Patterns::Double(0.),
+      "Stop the run as unstable when the kinetic plus strain energy of the "
+      "points exceeds (1 + this) times the energy supplied: the energy at "
+      "the start plus the work of gravity, body forces, tractions and "
+      "prescribed velocities. Checked every 10 steps and at every output. "
+      "A stable run errs on this balance by a few per cent; an unstable one "
+      "gains energy by a fixed factor per step (manual, 'Safety').");
+    prm.leave_subsection();
+
+    BackgroundGrid<dim>::declare_parameters(prm);
+    MaterialPoints<dim>::declare_parameters(prm);
+    MaterialLibrary<dim>::declare_parameters(prm, names.materials);
+    Problem<dim>::declare_common_parameters(prm);
+    for (const auto &name : names.bodies)
+      {
+        prm.enter_subsection("Body " + name);
+        Body<dim>::declare_parameters(prm);
+        prm.leave_subsection();
+      }
+    OutputWriter<dim>::declare_parameters(prm);
+    Checkpoint<dim>::declare_parameters(prm);
+    BoundaryConditions<dim>::declare_parameters(prm, names.boundaries);
+    LocalDamping<dim>::declare_parameters(prm);
+
+    PluginRegistry<Problem<dim>>::declare_parameters(prm);
+    PluginRegistry<NodalUpdate<dim>>::declare_parameters(prm);
+    PluginRegistry<ShapeFunctions<dim>>::declare_parameters(prm);
+    PluginRegistry<MassMatrix<dim>>::declare_parameters(prm);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::parse_parameters(ParameterHandler &prm)
+  {
+    AssertThrow(prm.get_integer("Dimension") == dim, ExcInternalError());
+
+    materials = std::make_unique<MaterialLibrary<dim>>();
+    materials->parse_parameters(prm);
+    problem_description =
+      PluginRegistry<Problem<dim>>::create(prm.get("Problem"));
+    problem_description->parse(prm, *materials);
+    shape_functions =
+      PluginRegistry<ShapeFunctions<dim>>::create(prm.get("Shape functions"));
+    shape_functions->parse_parameters(prm);
+    const std::string method = prm.get("Method");
+    AssertThrow(method == "MPM" || prm.get("Shape functions") != "Powell-Sabin",
+                ExcMessage("Shape functions = Powell-Sabin run with Method = "
+                           "MPM (Update scheme = USL or MUSL): their three "
+                           "functions per vertex do not move with the "
+                           "vertices, which OTM and the unified approach "
+                           "need (a moving triangulation is future work)."));
+    std::string update_scheme = prm.get("Update scheme");
+    if (update_scheme == "automatic")
+      update_scheme = (method == "MPM") ? "MUSL" : "USL";
+    if (method == "OTM")
+      {
+        AssertThrow(prm.get("Update scheme") == "automatic",
+                    ExcMessage("Update scheme = " + prm.get("Update scheme") +
+                               " applies to Method = MPM or Unified; OTM has "
+                               "its own nodal update (journal Eq. 51). Remove "
+                               "the entry."));
+        AssertThrow(shape_functions->is_linearly_complete(),
+                    ExcMessage(
+                      "Method = OTM needs linearly complete shape "
+                      "functions (journal Eq. 47); Shape functions = " +
+                      prm.get("Shape functions") +
+                      (prm.get("Shape functions") == "B-spline" ?
+                         " of degree " + prm.get("B-spline degree") :
+                         std::string()) +
+                      " are not. Use Method = MPM or Unified, or "
+                      "linearly complete functions (B-spline degree = 1)."));
+        nodal_update = std::make_unique<OptimalTransportationUpdate<dim>>();
+        if (prm.get("Mass matrix") != "consistent")
+          pcout << "Note: OTM with Mass matrix = " << prm.get("Mass matrix")
+                << " smooths the particle velocities (journal Eq. 57) "
+                << "every step and is dissipative; Alg. 2 uses the "
+                << "consistent mass matrix (Eq. 48)." << std::endl;
+      }
+    else
+      nodal_update = PluginRegistry<NodalUpdate<dim>>::create(update_scheme);
+    if (method == "MPM")
+      grid_motion = std::make_unique<FixedGrid<dim>>();
+    else if (auto *splines =
+               dynamic_cast<BSplines<dim> *>(shape_functions.get()))
+      {
+        // Knots move with direction-averaged velocities in 2D and 3D while
+        // OTM moves the points with the full field (Alg. 2 needs points
+        // that keep their place in the moving discretisation).
+        AssertThrow(method == "Unified" || dim == 1,
+                    ExcMessage("Method = OTM with Shape functions = B-spline "
+                               "runs in 1D only: in 2D and 3D the knots move "
+                               "per direction with averaged velocities, which "
+                               "is the unified approach (Method = Unified), "
+                               "not OTM. Use Method = Unified, or linear "
+                               "functions for OTM."));
+        grid_motion = std::make_unique<AdvectedKnots<dim>>(*splines);
+      }
+    else
+      grid_motion = std::make_unique<AdvectedGrid<dim>>();
+    mass_matrix =
+      PluginRegistry<MassMatrix<dim>>::create(prm.get("Mass matrix"));
+    deactivation_threshold = prm.get_double("Deactivation threshold");
+
+    prm.enter_subsection("Time");
+    end_time                     = prm.get_double("End time");
+    const std::string step_entry = prm.get("Time step");
+    automatic_time_step          = (step_entry == "auto");
+    courant_factor               = prm.get_double("Courant factor");
+    energy_growth_limit          = prm.get_double("Energy growth limit");
+    prm.leave_subsection();
+    if (!automatic_time_step)
+      {
+        char *end = nullptr;
+        time_step = std::strtod(step_entry.c_str(), &end);
+        AssertThrow(end != step_entry.c_str() && *end == '\0' &&
+                      std::isfinite(time_step) && time_step > 0,
+                    ExcMessage("Time/Time step = " + step_entry +
+                               ": must be a positive number (s) or auto."));
+      }
+    AssertThrow(courant_factor > 0,
+                ExcMessage("Time/Courant factor must be positive (at most "
+                           "1)."));
+
+    grid = std::make_unique<BackgroundGrid<dim>>();
+    grid->parse_parameters(prm);
+    AssertThrow(grid->is_box() || problem_description->runs_on_any_grid(),
+                ExcMessage("Mesh/Mesh file: Problem = " + prm.get("Problem") +
+                           " is a benchmark defined on a box grid (its "
+                           "boundary ids are the box's sides 0 to " +
+                           std::to_string(2 * dim - 1) +
+                           "); on the mesh of a file use Problem = custom."));
+    points = std::make_unique<MaterialPoints<dim>>();
+    points->parse_parameters(prm);
+    output = std::make_unique<OutputWriter<dim>>();
+    output->parse_parameters(prm);
+    checkpoint = std::make_unique<Checkpoint<dim>>();
+    checkpoint->parse_parameters(prm);
+    boundary_conditions = std::make_unique<BoundaryConditions<dim>>();
+    boundary_conditions->parse_parameters(prm);
+    AssertThrow(boundary_conditions->empty() || method == "MPM",
+                ExcMessage("Boundaries: the boundary conditions of the entry "
+                           "'Boundaries' act on the nodes of a fixed grid and "
+                           "need Method = MPM; OTM and Unified move the grid "
+                           "with the material (use the problem's fixed "
+                           "components there)."));
+    damping = std::make_unique<LocalDamping<dim>>();
+    damping->parse_parameters(prm);
+  }
+
+
+
+  template void
+  Simulator<1>::declare_parameters(ParameterHandler &, const SubsectionNames &);
+  template void
+  Simulator<1>::parse_parameters(ParameterHandler &);
+  template void
+  Simulator<2>::declare_parameters(ParameterHandler &, const SubsectionNames &);
+  template void
+  Simulator<2>::parse_parameters(ParameterHandler &);
+  template void
+  Simulator<3>::declare_parameters(ParameterHandler &, const SubsectionNames &);
+  template void
+  Simulator<3>::parse_parameters(ParameterHandler &);
+} // namespace MpmOtm

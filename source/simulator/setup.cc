@@ -1,0 +1,243 @@
+// Simulator::setup(): the grid, points, shape functions, time step and
+// output of a new or resumed run. parameters.cc reads the parameters,
+// simulator.cc runs the time loop.
+
+#include <deal.II/base/timer.h>
+
+#include <mpm_otm/algorithms/grid_motion.h>
+#include <mpm_otm/algorithms/stable_time_step.h>
+#include <mpm_otm/base/collective_error.h>
+#include <mpm_otm/base/exception_message.h>
+#include <mpm_otm/boundary_conditions/boundary_conditions.h>
+#include <mpm_otm/grid/background_grid.h>
+#include <mpm_otm/grid_system/mass_matrix.h>
+#include <mpm_otm/grid_system/nodal_system.h>
+#include <mpm_otm/io/checkpoint.h>
+#include <mpm_otm/io/output_writer.h>
+#include <mpm_otm/material_points/material_points.h>
+#include <mpm_otm/materials/material_library.h>
+#include <mpm_otm/problems/problem.h>
+#include <mpm_otm/shape_functions/shape_functions.h>
+#include <mpm_otm/simulator/simulator.h>
+
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+#include <tuple>
+
+namespace MpmOtm
+{
+  template <int dim>
+  void
+  Simulator<dim>::setup(const ParameterHandler &prm, const bool resume)
+  {
+    grid->create(communicator, grid_motion->moves_vertices());
+
+    problem_description->initialize(materials->default_material(), grid->box());
+    if (grid_motion->moves_vertices() && grid->is_box())
+      {
+        // OTM and the unified approach mesh the material domain only: a
+        // node without material would stay behind while the cells around
+        // it move with the material.
+        const auto   region    = problem_description->material_region();
+        const auto   box       = grid->box();
+        const double tolerance = 1e-10 * box.side_length(0);
+        bool         same      = true;
+        for (unsigned int d = 0; d < dim; ++d)
+          same =
+            same &&
+            std::abs(region.lower_bound(d) - box.lower_bound(d)) <= tolerance &&
+            std::abs(region.upper_bound(d) - box.upper_bound(d)) <= tolerance;
+        if (!same)
+          {
+            std::ostringstream message;
+            message << "Method = OTM and Unified move the grid with the "
+                       "material, so the grid must be the material domain: "
+                       "the material fills ["
+                    << region.get_boundary_points().first << "] to ["
+                    << region.get_boundary_points().second
+                    << "] but the grid (Mesh/Lower corner, Upper corner) "
+                       "spans ["
+                    << box.get_boundary_points().first << "] to ["
+                    << box.get_boundary_points().second
+                    << "]. Set the Mesh corners to the material's.";
+            AssertThrow(false, ExcMessage(message.str()));
+          }
+      }
+    points->seed(*grid, *materials, *problem_description);
+    if (grid_motion->moves_vertices() && !grid->is_box())
+      {
+        // The same condition on a Mesh file: no point of the seeding
+        // pattern may lie outside the material.
+        const auto outside = points->n_pattern_points_outside_bodies();
+        AssertThrow(outside == 0,
+                    ExcMessage(
+                      "Method = OTM and Unified move the grid with the "
+                      "material, so the material must fill the grid, but " +
+                      std::to_string(outside) +
+                      " points of the seeding pattern in the cells of "
+                      "Mesh/Mesh file <" +
+                      grid->mesh_file() +
+                      "> lie in no body. Mesh only the material, or let the "
+                      "bodies cover every cell."));
+      }
+    AssertThrow(points->n_global_points() > 0,
+                ExcMessage("No material point was created: the problem's "
+                           "material region contains no block centre of "
+                           "the grid."));
+    Timer shape_function_timer(communicator, true);
+    shape_functions->initialize(*grid);
+    shape_function_timer.stop();
+    boundary_conditions->setup(*shape_functions, *grid);
+    auto fixed_components = problem_description->fixed_components();
+    {
+      const auto grid_ids = grid->boundary_ids();
+      for (const auto &fixed : fixed_components)
+        if (!std::binary_search(grid_ids.begin(),
+                                grid_ids.end(),
+                                fixed.boundary_id))
+          {
+            std::string ids;
+            for (const auto id : grid_ids)
+              ids += (ids.empty() ? "" : ", ") + std::to_string(id);
+            AssertThrow(false,
+                        ExcMessage(
+                          "The problem's fixed components (Custom "
+                          "problem/Fixed components) name boundary id " +
+                          std::to_string(fixed.boundary_id) +
+                          ", which no boundary face of the grid has; the "
+                          "grid's boundary ids are " +
+                          ids +
+                          " (for a Mesh file its physical tags, 0 on "
+                          "untagged faces)."));
+          }
+    }
+    for (const auto &fixed : boundary_conditions->fixed_components())
+      fixed_components.push_back(fixed);
+    system = std::make_unique<NodalSystem<dim>>();
+    system->setup(*shape_functions,
+                  fixed_components,
+                  deactivation_threshold,
+                  mass_matrix->needs_material_boundary());
+    // The stable time step of this discretisation at the start; a larger
+    // time step is rejected before anything is written.
+    const auto stable = StableTimeStep<dim>().estimate(*points,
+                                                       *shape_functions,
+                                                       *system,
+                                                       *mass_matrix,
+                                                       *materials,
+                                                       *problem_description);
+    stable_step       = stable.time_step;
+    if (automatic_time_step)
+      time_step = courant_factor * stable.time_step;
+    if (!(time_step <= stable.time_step))
+      {
+        std::ostringstream message;
+        message << "Time/Time step = " << time_step
+                << " exceeds the stable time step 2 / omega_max = "
+                << stable.time_step << " of this discretisation (omega_max = "
+                << stable.largest_frequency
+                << " 1/s, the largest frequency of its shape functions, mass "
+                   "matrix and material points at the start; for reference "
+                   "h / c = "
+                << grid->minimal_cell_size() / materials->maximal_wave_speed()
+                << " with the smallest cell size h and the wave speed c). "
+                   "Choose a time step of at most "
+                << stable.time_step
+                << ", or Time step = auto (manual, 'Time step').";
+        AssertThrow(false, ExcMessage(message.str()));
+      }
+    grid_motion->initialize(*grid,
+                            *shape_functions,
+                            *system,
+                            grid->minimal_cell_size() * time_step /
+                              stable.time_step);
+    // Every load expression is evaluated before anything is written: the
+    // body force at every point's initial position and the tractions, at
+    // the start and at the end time. An expression that does not evaluate
+    // then stops the run here instead of in its first step.
+    {
+      std::string problem;
+      try
+        {
+          using Layout = PropertyLayout<dim>;
+          for (const double t : {0., end_time})
+            {
+              if (problem_description->has_body_force())
+                for (const auto &particle : points->particle_handler())
+                  problem_description->body_force(
+                    Point<dim>(Layout::get_vector(particle.get_properties(),
+                                                  Layout::initial_position)),
+                    t);
+              for (const auto id : problem_description->traction_boundaries())
+                problem_description->traction(id, t);
+            }
+        }
+      catch (const std::exception &error)
+        {
+          problem = message_of(error) + " ";
+        }
+      stop_if_any_rank_failed(communicator, problem, "", "");
+    }
+    current_time = 0;
+    std::string resumed_from;
+    if (resume)
+      {
+        // The grid moves first; the points then enter their saved cells.
+        resumed_from =
+          Checkpoint<dim>::newest(output->directory(), communicator);
+        resumed_state = std::make_unique<CheckpointState>();
+        std::tie(resumed_step, current_time) =
+          Checkpoint<dim>::read(resumed_from,
+                                *points,
+                                *resumed_state,
+                                communicator);
+        grid_motion->load(*resumed_state);
+        shape_functions->load(*resumed_state);
+        system->load(*resumed_state);
+        boundary_conditions->load(*resumed_state);
+      }
+    output->initialize(prm,
+                       problem_description->has_exact_solution(),
+                       problem_description->has_exact_stress(),
+                       communicator,
+                       *materials,
+                       boundary_conditions->names(),
+                       problem_description->has_gravity(),
+                       resumed_step);
+    if (resume)
+      output->load(*resumed_state);
+    else
+      output->write_powell_sabin_basis(*shape_functions);
+
+    pcout << "mpm-otm: " << dim << "D, "
+          << grid->triangulation().n_global_active_cells() << " cells, "
+          << shape_functions->n_functions() << " shape functions, "
+          << points->n_global_points() << " material points, "
+          << Utilities::MPI::n_mpi_processes(communicator) << " MPI rank(s)"
+          << std::endl;
+    pcout << "time step " << time_step << " s = " << std::setprecision(3)
+          << time_step / stable.time_step
+          << " x the stable time step 2 / omega_max = " << stable.time_step
+          << " s (Lanczos, " << stable.iterations << " iterations";
+    if (!stable.converged)
+      pcout << ", not converged: omega_max^2 changed by " << stable.last_change
+            << " in the last one";
+    pcout << ")" << std::setprecision(6) << std::endl;
+    pcout << "set-up of the shape functions: wall time = " << std::fixed
+          << std::setprecision(3) << shape_function_timer.wall_time() << " s"
+          << std::defaultfloat << std::endl;
+    if (resume)
+      pcout << "resumed from <" << resumed_from << ">, written after time step "
+            << resumed_step << " (t = " << current_time << ")" << std::endl;
+  }
+
+
+
+  template void
+  Simulator<1>::setup(const ParameterHandler &, const bool);
+  template void
+  Simulator<2>::setup(const ParameterHandler &, const bool);
+  template void
+  Simulator<3>::setup(const ParameterHandler &, const bool);
+} // namespace MpmOtm
