@@ -23,6 +23,7 @@
 #include <mpm_otm/simulator/simulator.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 
 namespace MpmOtm

@@ -20,6 +20,7 @@
 #include <mpm_otm/shape_functions/shape_functions.h>
 #include <mpm_otm/simulator/simulator.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <sstream>

@@ -941,15 +941,36 @@ namespace
   }
 
   /**
+   * A rotation by a random angle about the z axis: a trial built with it is
+   * a plane-strain stress (z a principal direction), which the model
+   * returns with its closed-form in-plane directions.
+   */
+  Tensor<2, 3>
+  random_rotation_about_z(Random &random)
+  {
+    const double angle = random.uniform(-numbers::PI, numbers::PI);
+    Tensor<2, 3> R;
+    R[0][0] = R[1][1] = std::cos(angle);
+    R[0][1]           = -std::sin(angle);
+    R[1][0]           = std::sin(angle);
+    R[2][2]           = 1.;
+    return R;
+  }
+
+  /**
    * Random trials for Mohr-Coulomb with dilatancy @p psi and cut-off
-   * @p cut_off: the result is on the boundary and keeps the trial's
+   * @p cut_off, rotated at random in 3D or, if @p plane_strain, about z
+   * only (z then holds the largest, middle or smallest principal stress
+   * at random): the result is on the boundary and keeps the trial's
    * principal directions; for psi = phi it is the closest admissible stress
    * in the energy norm, i.e. (trial - sigma) : C^-1 : (tau - sigma) <= 0 for
    * every admissible tau (checked for admissible tau with the same
    * eigenvectors, in any order, which suffices for an isotropic set).
    */
   void
-  test_mohr_coulomb_random(const std::string &psi, const std::string &cut_off)
+  test_mohr_coulomb_random(const std::string &psi,
+                           const std::string &cut_off,
+                           const bool         plane_strain = false)
   {
     using Return = MohrCoulomb<3>::Return;
     Entries entries{{"Friction angle", "30"},
@@ -979,11 +1000,12 @@ namespace
       {
         // Principal trial stresses in a box around the apex, some far out
         // on the tensile side.
-        const double                spread = (i % 2) ? 10. : 40.;
-        std::array<double, 3>       t{{random.uniform(-spread, 10.),
-                                       random.uniform(-spread, 10.),
-                                       random.uniform(-spread, 10.)}};
-        const Tensor<2, 3>          Q      = random_rotation(random);
+        const double          spread = (i % 2) ? 10. : 40.;
+        std::array<double, 3> t{{random.uniform(-spread, 10.),
+                                 random.uniform(-spread, 10.),
+                                 random.uniform(-spread, 10.)}};
+        const Tensor<2, 3> Q = plane_strain ? random_rotation_about_z(random) :
+                                              random_rotation(random);
         const SymmetricTensor<2, 3> trial  = from_principal(t, Q);
         SymmetricTensor<2, 3>       stress = trial;
         double                      eps    = 0.;
@@ -1052,7 +1074,8 @@ namespace
               }
           }
       }
-    deallog << "Mohr-Coulomb, psi = " << psi << ", cut-off "
+    deallog << "Mohr-Coulomb" << (plane_strain ? " (plane strain)" : "")
+            << ", psi = " << psi << ", cut-off "
             << (cut_off.empty() ? "apex" : cut_off)
             << ", random trials per region:";
     std::string text;
@@ -1078,4 +1101,6 @@ main(int argc, char **argv)
   test_mohr_coulomb_random("10", "0.5");
   test_mohr_coulomb_random("30", "0.5");
   test_mohr_coulomb_random("0", "0");
+  test_mohr_coulomb_random("10", "", true);
+  test_mohr_coulomb_random("30", "0.5", true);
 }
