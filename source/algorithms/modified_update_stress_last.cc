@@ -26,7 +26,7 @@ namespace MpmOtm
                         shape_data,
                         system.momentum[c],
                         system.velocity[c],
-                        c);
+                        system.constraints()[c]);
   }
 
 

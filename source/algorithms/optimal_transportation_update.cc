@@ -22,7 +22,7 @@ namespace MpmOtm
                           shape_data,
                           right_hand_side,
                           system.velocity[c],
-                          c);
+                          system.constraints()[c]);
       }
   }
 

@@ -84,7 +84,11 @@ namespace MpmOtm
           {
             for (const unsigned int i : negligible)
               r[c].local_element(i) = 0.;
-            mass_matrix.solve(system, data, r[c], q[c], c);
+            mass_matrix.solve(system,
+                              data,
+                              r[c],
+                              q[c],
+                              system.constraints()[c]);
             for (const unsigned int i : negligible)
               q[c].local_element(i) = 0.;
             r_norm_squared += q[c] * r[c];

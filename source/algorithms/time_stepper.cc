@@ -62,12 +62,17 @@ namespace MpmOtm
     if (nodal_update.needs_nodal_accelerations())
       {
         TimerOutput::Scope scope(timer, "solve");
+        boundary_conditions.make_acceleration_constraints(
+          system,
+          time,
+          dt,
+          acceleration_constraints);
         for (unsigned int c = 0; c < dim; ++c)
           mass_matrix.solve(system,
                             data,
                             system.force[c],
                             system.acceleration[c],
-                            c);
+                            acceleration_constraints[c]);
         boundary_conditions.measure_gaps(material_points, data, system);
         boundary_conditions.constrain_accelerations(system, time, dt);
         for (unsigned int c = 0; c < dim; ++c)

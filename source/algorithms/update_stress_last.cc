@@ -26,7 +26,7 @@ namespace MpmOtm
                           shape_data,
                           system.momentum[c],
                           system.velocity[c],
-                          c);
+                          system.constraints()[c]);
         system.velocity[c].add(dt, system.acceleration[c]);
       }
   }

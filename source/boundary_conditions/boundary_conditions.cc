@@ -448,18 +448,94 @@ namespace MpmOtm
 
 
   template <int dim>
+  std::array<bool, dim>
+  BoundaryConditions<dim>::constrained_components(
+    const Condition &condition) const
+  {
+    std::array<bool, dim> result{};
+    switch (condition.type)
+      {
+        case Type::fixed:
+          result.fill(true);
+          break;
+        case Type::slip:
+          for (unsigned int d = 0; d < dim; ++d)
+            result[d] = std::abs(std::abs(condition.normal[d]) - 1.) < 1e-12;
+          break;
+        case Type::velocity:
+          result = condition.components;
+          break;
+        default:
+          break;
+      }
+    return result;
+  }
+
+
+
+  template <int dim>
+  void
+  BoundaryConditions<dim>::make_acceleration_constraints(
+    const NodalSystem<dim>                 &system,
+    const double                            time,
+    const double                            dt,
+    typename NodalSystem<dim>::Constraints &constraints)
+  {
+    for (unsigned int c = 0; c < dim; ++c)
+      constraints[c].copy_from(system.constraints()[c]);
+    // A box of prescribed velocity moves with its displacement.
+    for (auto &condition : conditions)
+      if (condition.on_box && condition.type == Type::velocity)
+        find_box_functions(condition);
+    const Utilities::MPI::Partitioner &partitioner = system.partitioner();
+    for (const auto &condition : conditions)
+      {
+        const std::array<bool, dim> components =
+          constrained_components(condition);
+        if (std::none_of(components.begin(), components.end(), [](bool b) {
+              return b;
+            }))
+          continue;
+        const Tensor<1, dim> target =
+          corrected_velocity(condition, Tensor<1, dim>(), time + dt);
+        for (const unsigned int i : condition.functions)
+          {
+            const double m = system.lumped_mass.local_element(i);
+            if (!(m > 0.))
+              continue;
+            const types::global_dof_index global =
+              partitioner.local_to_global(i);
+            for (unsigned int c = 0; c < dim; ++c)
+              if (components[c])
+                {
+                  constraints[c].add_line(global);
+                  constraints[c].set_inhomogeneity(
+                    global,
+                    (target[c] - system.momentum[c].local_element(i) / m) / dt);
+                }
+          }
+      }
+  }
+
+
+
+  template <int dim>
   void
   BoundaryConditions<dim>::constrain_accelerations(NodalSystem<dim> &system,
                                                    const double      time,
                                                    const double      dt)
   {
-    // A box of prescribed velocity moves with its displacement.
-    for (auto &condition : conditions)
-      if (condition.on_box && condition.type == Type::velocity)
-        find_box_functions(condition);
     for (auto &condition : conditions)
       {
         condition.in_contact.assign(condition.functions.size(), false);
+        if (condition.type != Type::friction && condition.type != Type::slip)
+          continue;
+        const std::array<bool, dim> components =
+          constrained_components(condition);
+        if (std::any_of(components.begin(), components.end(), [](bool b) {
+              return b;
+            }))
+          continue;
         for (unsigned int k = 0; k < condition.functions.size(); ++k)
           {
             const unsigned int i = condition.functions[k];

@@ -516,17 +516,22 @@ namespace MpmOtm
 
   template <int dim>
   void
-  ConsistentMassMatrix<dim>::solve(const NodalSystem<dim>       &system,
-                                   const ParticleShapeData<dim> &shape_data,
-                                   const VectorType  &right_hand_side,
-                                   VectorType        &solution,
-                                   const unsigned int component) const
+  ConsistentMassMatrix<dim>::solve(
+    const NodalSystem<dim>          &system,
+    const ParticleShapeData<dim>    &shape_data,
+    const VectorType                &right_hand_side,
+    VectorType                      &solution,
+    const AffineConstraints<double> &constraints) const
   {
-    solve_without(system,
-                  shape_data,
-                  right_hand_side,
-                  solution,
-                  system.excluded_functions(component));
+    std::vector<unsigned int> prescribed;
+    std::vector<double>       values;
+    system.local_lines(constraints, prescribed, values);
+    solve_prescribed(system,
+                     shape_data,
+                     right_hand_side,
+                     solution,
+                     prescribed,
+                     values);
   }
 
 
@@ -552,29 +557,56 @@ namespace MpmOtm
 
   template <int dim>
   void
-  ConsistentMassMatrix<dim>::solve_without(
+  ConsistentMassMatrix<dim>::solve_prescribed(
     const NodalSystem<dim>          &system,
     const ParticleShapeData<dim>    &shape_data,
     const VectorType                &right_hand_side,
     VectorType                      &solution,
-    const std::vector<unsigned int> &excluded) const
+    const std::vector<unsigned int> &prescribed,
+    const std::vector<double>       &values) const
   {
     VectorType rhs(right_hand_side);
     rhs.zero_out_ghost_values();
-    for (const unsigned int i : excluded)
-      rhs.local_element(i) = 0.;
 
-    const double norm = rhs.l2_norm();
+    // b_f - M_fp x_p; the vector x_p is communicated, so every rank takes
+    // part even without prescribed values of its own.
+    const bool inhomogeneous =
+      Utilities::MPI::max(std::any_of(values.begin(),
+                                      values.end(),
+                                      [](const double b) {
+                                        return b != 0.;
+                                      }) ?
+                            1 :
+                            0,
+                          rhs.get_mpi_communicator()) == 1;
+    if (inhomogeneous)
+      {
+        VectorType lifted, product;
+        lifted.reinit(right_hand_side);
+        product.reinit(right_hand_side, true);
+        for (unsigned int k = 0; k < prescribed.size(); ++k)
+          lifted.local_element(prescribed[k]) = values[k];
+        multiply(system, shape_data, lifted, product, {});
+        rhs -= product;
+      }
+    for (const unsigned int i : prescribed)
+      rhs.local_element(i) = 0.;
+    const double norm           = rhs.l2_norm();
+    const auto   set_prescribed = [&]() {
+      for (unsigned int k = 0; k < prescribed.size(); ++k)
+        solution.local_element(prescribed[k]) = values[k];
+    };
     if (norm == 0.)
       {
         solution = 0.;
+        set_prescribed();
         return;
       }
 
     // Start from the solution of the previous step (the same quantity a
     // time step earlier), which is close: CG then needs few iterations.
     solution.zero_out_ghost_values();
-    for (const unsigned int i : excluded)
+    for (const unsigned int i : prescribed)
       solution.local_element(i) = 0.;
 
     SolverControl        control(1000, 1e-13 * norm, false, false);
@@ -582,14 +614,14 @@ namespace MpmOtm
     const auto           solve_with = [&](const auto &preconditioner) {
       if (use_matrix)
         cg.solve(
-          SparseMassOperator<dim>(row_offsets, columns, entries, excluded),
+          SparseMassOperator<dim>(row_offsets, columns, entries, prescribed),
           solution,
           rhs,
           preconditioner);
       else
         cg.solve(ParticleMassOperator<dim>(shape_data,
                                            system.particle_mass,
-                                           excluded),
+                                           prescribed),
                  solution,
                  rhs,
                  preconditioner);
@@ -601,7 +633,7 @@ namespace MpmOtm
         else
           solve_with(NodeBlockPreconditioner<dim>(node_block_entries,
                                                   system.lumped_mass,
-                                                  excluded));
+                                                  prescribed));
       }
     catch (const SolverControl::NoConvergence &failure)
       {
@@ -619,6 +651,7 @@ namespace MpmOtm
                    "lumped', or a smaller 'Max-ent support factor'.";
         AssertThrow(false, ExcMessage(message.str()));
       }
+    set_prescribed();
   }
 
 

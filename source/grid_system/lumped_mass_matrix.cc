@@ -12,11 +12,12 @@ namespace MpmOtm
 
   template <int dim>
   void
-  LumpedMassMatrix<dim>::solve(const NodalSystem<dim> &system,
-                               const ParticleShapeData<dim> &,
-                               const VectorType  &right_hand_side,
-                               VectorType        &solution,
-                               const unsigned int component) const
+  LumpedMassMatrix<dim>::solve(
+    const NodalSystem<dim> &system,
+    const ParticleShapeData<dim> &,
+    const VectorType                &right_hand_side,
+    VectorType                      &solution,
+    const AffineConstraints<double> &constraints) const
   {
     const VectorType &mass = system.lumped_mass;
     for (unsigned int i = 0; i < solution.locally_owned_size(); ++i)
@@ -25,8 +26,8 @@ namespace MpmOtm
         solution.local_element(i) =
           (m > 0.) ? right_hand_side.local_element(i) / m : 0.;
       }
-    for (const unsigned int i : system.excluded_functions(component))
-      solution.local_element(i) = 0.;
+    for (const auto &line : constraints.get_lines())
+      solution(line.index) = line.inhomogeneity;
   }
 
 

@@ -228,11 +228,6 @@ namespace MpmOtm
                            "infinite): check the body force, traction and "
                            "initial velocity expressions and the time step."));
 
-    empty.clear();
-    for (unsigned int i = 0; i < lumped_mass.locally_owned_size(); ++i)
-      if (!(lumped_mass.local_element(i) > 0.))
-        empty.push_back(i);
-
     deactivated.clear();
     if (deactivation_threshold > 0.)
       {
@@ -241,6 +236,19 @@ namespace MpmOtm
           if (lumped_mass.local_element(i) > 0. &&
               diagonal_mass.local_element(i) < deactivation_threshold)
             deactivated.push_back(i);
+      }
+
+    for (unsigned int c = 0; c < dim; ++c)
+      {
+        AffineConstraints<double> &lines = zero_constraints[c];
+        lines.reinit(index_partition->locally_owned_range());
+        for (const unsigned int i : fixed[c])
+          lines.add_line(index_partition->local_to_global(i));
+        for (const unsigned int i : deactivated)
+          lines.add_line(index_partition->local_to_global(i));
+        for (unsigned int i = 0; i < lumped_mass.locally_owned_size(); ++i)
+          if (!(lumped_mass.local_element(i) > 0.))
+            lines.add_line(index_partition->local_to_global(i));
       }
   }
 
@@ -280,22 +288,36 @@ namespace MpmOtm
 
 
   template <int dim>
-  std::vector<unsigned int>
-  NodalSystem<dim>::excluded_functions(const unsigned int component) const
+  const typename NodalSystem<dim>::Constraints &
+  NodalSystem<dim>::constraints() const
   {
-    std::vector<unsigned int> fixed_or_empty;
-    std::set_union(fixed[component].begin(),
-                   fixed[component].end(),
-                   empty.begin(),
-                   empty.end(),
-                   std::back_inserter(fixed_or_empty));
-    std::vector<unsigned int> result;
-    std::set_union(fixed_or_empty.begin(),
-                   fixed_or_empty.end(),
-                   deactivated.begin(),
-                   deactivated.end(),
-                   std::back_inserter(result));
-    return result;
+    return zero_constraints;
+  }
+
+
+
+  template <int dim>
+  void
+  NodalSystem<dim>::local_lines(const AffineConstraints<double> &constraints,
+                                std::vector<unsigned int>       &indices,
+                                std::vector<double>             &values) const
+  {
+    std::vector<std::pair<unsigned int, double>> lines;
+    for (const auto &line : constraints.get_lines())
+      {
+        Assert(line.entries.empty(),
+               ExcMessage("Only constraints x_i = b_i are supported."));
+        lines.emplace_back(index_partition->global_to_local(line.index),
+                           line.inhomogeneity);
+      }
+    std::sort(lines.begin(), lines.end());
+    indices.resize(lines.size());
+    values.resize(lines.size());
+    for (unsigned int k = 0; k < lines.size(); ++k)
+      {
+        indices[k] = lines[k].first;
+        values[k]  = lines[k].second;
+      }
   }
 
 

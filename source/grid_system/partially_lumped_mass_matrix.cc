@@ -2,7 +2,7 @@
 #include <mpm_otm/grid_system/partially_lumped_mass_matrix.h>
 
 #include <algorithm>
-#include <iterator>
+#include <tuple>
 
 namespace MpmOtm
 {
@@ -25,53 +25,38 @@ namespace MpmOtm
   template <int dim>
   void
   PartiallyLumpedMassMatrix<dim>::solve(
-    const NodalSystem<dim>       &system,
-    const ParticleShapeData<dim> &shape_data,
-    const VectorType             &right_hand_side,
-    VectorType                   &solution,
-    const unsigned int            component) const
+    const NodalSystem<dim>          &system,
+    const ParticleShapeData<dim>    &shape_data,
+    const VectorType                &right_hand_side,
+    VectorType                      &solution,
+    const AffineConstraints<double> &constraints) const
   {
-    const std::vector<unsigned int> excluded =
-      system.excluded_functions(component);
-    const std::vector<unsigned int> &edge =
-      system.material_boundary_functions();
-    std::vector<unsigned int> lumped_rows;
-    std::set_difference(edge.begin(),
-                        edge.end(),
-                        excluded.begin(),
-                        excluded.end(),
-                        std::back_inserter(lumped_rows));
+    // a_B = f_B / m_B on the lumped rows (the edge functions that are not
+    // constrained), then M_II a_I = f_I - M_IB a_B on the others: a solve
+    // with the lumped rows prescribed like the constrained ones.
+    std::vector<unsigned int> constrained;
+    std::vector<double>       constrained_values;
+    system.local_lines(constraints, constrained, constrained_values);
+    std::vector<std::pair<unsigned int, double>> prescribed;
+    for (unsigned int k = 0; k < constrained.size(); ++k)
+      prescribed.emplace_back(constrained[k], constrained_values[k]);
+    for (const unsigned int i : system.material_boundary_functions())
+      if (!std::binary_search(constrained.begin(), constrained.end(), i))
+        prescribed.emplace_back(i,
+                                right_hand_side.local_element(i) /
+                                  system.lumped_mass.local_element(i));
+    std::sort(prescribed.begin(), prescribed.end());
 
-    // a_B = f_B / m_B on the lumped rows.
-    VectorType lumped_part;
-    lumped_part.reinit(right_hand_side);
-    for (const unsigned int i : lumped_rows)
-      lumped_part.local_element(i) =
-        right_hand_side.local_element(i) / system.lumped_mass.local_element(i);
-
-    // M_II a_I = f_I - M_IB a_B on the others.
-    VectorType product;
-    product.reinit(right_hand_side, true);
-    this->multiply(system, shape_data, lumped_part, product, excluded);
-    VectorType remainder;
-    remainder.reinit(right_hand_side, true);
-    for (unsigned int i = 0; i < remainder.locally_owned_size(); ++i)
-      remainder.local_element(i) =
-        right_hand_side.local_element(i) - product.local_element(i);
-    std::vector<unsigned int> consistent_excluded;
-    std::set_union(excluded.begin(),
-                   excluded.end(),
-                   lumped_rows.begin(),
-                   lumped_rows.end(),
-                   std::back_inserter(consistent_excluded));
-    this->solve_without(system,
-                        shape_data,
-                        remainder,
-                        solution,
-                        consistent_excluded);
-
-    for (const unsigned int i : lumped_rows)
-      solution.local_element(i) = lumped_part.local_element(i);
+    std::vector<unsigned int> indices(prescribed.size());
+    std::vector<double>       values(prescribed.size());
+    for (unsigned int k = 0; k < prescribed.size(); ++k)
+      std::tie(indices[k], values[k]) = prescribed[k];
+    this->solve_prescribed(system,
+                           shape_data,
+                           right_hand_side,
+                           solution,
+                           indices,
+                           values);
   }
 
 

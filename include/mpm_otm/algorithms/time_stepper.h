@@ -112,6 +112,12 @@ namespace MpmOtm
     ParticleShapeData<dim>      data;
 
     /**
+     * The constraints of the acceleration solves: the system's, with the
+     * prescribed velocities of the boundary conditions.
+     */
+    typename NodalSystem<dim>::Constraints acceleration_constraints;
+
+    /**
      * Length of the previous step (0 before the first).
      */
     double previous_dt = 0.;

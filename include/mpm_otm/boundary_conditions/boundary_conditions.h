@@ -37,15 +37,21 @@ namespace MpmOtm
    * a prescribed velocity (functions of time) on some components. A box of
    * prescribed velocity moves with the displacement it prescribes (a
    * settling footing, a moving platen): every step it acts on the vertices
-   * inside the moved box. They act
-   * on the nodal (coefficient) velocities of a fixed grid with the standard
-   * nodal treatment (Bardenhagen, Brackbill & Sulsky 2000; Bardenhagen et
-   * al. 2001): after the accelerations are solved, each constrained node's
-   * velocity at the end of the step, v* = v + dt a with v = q / m, is
-   * corrected - for friction the velocity into the wall (along the
-   * boundary's outward normal n, v*.n > 0) is removed and the tangential
-   * velocity reduced by at most mu times the removed normal velocity - and
-   * the acceleration set to (v_new - v) / dt, so that the particles follow.
+   * inside the moved box. They act on the nodal (coefficient) velocities
+   * of a fixed grid, v_new = v + dt a at the end of the step with
+   * v = q / m (Bardenhagen, Brackbill & Sulsky 2000; Bardenhagen et al.
+   * 2001). The conditions that fix components - fixed, slip on a side
+   * normal to a coordinate direction, prescribed velocity - enter the
+   * solve for the accelerations as inhomogeneous affine constraints
+   * a_i = (v_prescribed - v_i) / dt (make_acceleration_constraints()), so
+   * that with a consistent mass matrix the free coefficients feel the
+   * prescribed ones. Friction and slip on an inclined side are not affine
+   * in one component: after the solve, each node's velocity
+   * v* = v + dt a is corrected - for friction the velocity into the wall
+   * (along the boundary's outward normal n, v*.n > 0) is removed and the
+   * tangential velocity reduced by at most mu times the removed normal
+   * velocity - and the acceleration set to (v_new - v) / dt, so that the
+   * particles follow.
    * A frictional wall acts on a node only where the material touches it:
    * the gap between the wall and the points in the node's support (each
    * point's distance from the wall less half its size, the smallest over
@@ -113,9 +119,23 @@ namespace MpmOtm
                  const NodalSystem<dim>       &system);
 
     /**
+     * Set @p constraints to the system's NodalSystem::constraints() and add
+     * the conditions that fix components, for the accelerations of the step
+     * from @p time to @p time + @p dt: a_i = (v_prescribed - q_i / m_i) /
+     * dt on the nodes with mass.
+     */
+    void
+    make_acceleration_constraints(
+      const NodalSystem<dim>                 &system,
+      const double                            time,
+      const double                            dt,
+      typename NodalSystem<dim>::Constraints &constraints);
+
+    /**
      * Correct the accelerations of the step from @p time to @p time + @p dt
-     * (locally owned entries of system.acceleration, solved from the
-     * assembled forces) and compute the reactions. Collective.
+     * (locally owned entries of system.acceleration, solved subject to
+     * make_acceleration_constraints()) for friction and slip on inclined
+     * sides, and compute the reactions. Collective.
      */
     void
     constrain_accelerations(NodalSystem<dim> &system,
@@ -203,6 +223,13 @@ namespace MpmOtm
       Tensor<1, dim>    displacement;
       unsigned int      n_steps = 0;
     };
+
+    /**
+     * The components that @p condition fixes by an affine constraint (none
+     * for friction and for slip on an inclined side).
+     */
+    std::array<bool, dim>
+    constrained_components(const Condition &condition) const;
 
     /**
      * The corrected velocity of a node with velocity @p v under

@@ -36,24 +36,26 @@ namespace MpmOtm
              const ParticleShapeData<dim> &shape_data) override;
 
     void
-    solve(const NodalSystem<dim>       &system,
-          const ParticleShapeData<dim> &shape_data,
-          const VectorType             &right_hand_side,
-          VectorType                   &solution,
-          const unsigned int            component) const override;
+    solve(const NodalSystem<dim>          &system,
+          const ParticleShapeData<dim>    &shape_data,
+          const VectorType                &right_hand_side,
+          VectorType                      &solution,
+          const AffineConstraints<double> &constraints) const override;
 
   protected:
     /**
      * Solve M @p solution = @p right_hand_side with the coefficients
-     * @p excluded (sorted local indices) set to zero, by CG; stops the run
-     * if CG does not converge.
+     * @p prescribed (sorted local indices) set to @p values: the other rows
+     * solve M_ff x_f = b_f - M_fp x_p by CG; stops the run if CG does not
+     * converge.
      */
     void
-    solve_without(const NodalSystem<dim>          &system,
-                  const ParticleShapeData<dim>    &shape_data,
-                  const VectorType                &right_hand_side,
-                  VectorType                      &solution,
-                  const std::vector<unsigned int> &excluded) const;
+    solve_prescribed(const NodalSystem<dim>          &system,
+                     const ParticleShapeData<dim>    &shape_data,
+                     const VectorType                &right_hand_side,
+                     VectorType                      &solution,
+                     const std::vector<unsigned int> &prescribed,
+                     const std::vector<double>       &values) const;
 
     /**
      * @p product = M @p vector, with the identity on the coefficients

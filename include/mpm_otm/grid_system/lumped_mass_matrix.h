@@ -18,11 +18,11 @@ namespace MpmOtm
     declare_parameters(ParameterHandler &prm);
 
     void
-    solve(const NodalSystem<dim>       &system,
-          const ParticleShapeData<dim> &shape_data,
-          const VectorType             &right_hand_side,
-          VectorType                   &solution,
-          const unsigned int            component) const override;
+    solve(const NodalSystem<dim>          &system,
+          const ParticleShapeData<dim>    &shape_data,
+          const VectorType                &right_hand_side,
+          VectorType                      &solution,
+          const AffineConstraints<double> &constraints) const override;
   };
 } // namespace MpmOtm
 

@@ -9,8 +9,9 @@ namespace MpmOtm
    * How the mass matrix M_ij = sum_p m_p phi_i(x_p) phi_j(x_p) (journal
    * Eq. 19) is used to turn nodal forces into accelerations and momenta into
    * velocities: consistent, lumped (row sums, journal Eq. 17), or partially
-   * lumped (thesis Sect. 5.4). Coefficients that NodalSystem excludes get
-   * zero.
+   * lumped (thesis Sect. 5.4). The solves honour affine constraints
+   * x_i = b_i (NodalSystem::constraints(), to which boundary conditions add
+   * prescribed values).
    */
   template <int dim>
   class MassMatrix
@@ -38,15 +39,18 @@ namespace MpmOtm
     {}
 
     /**
-     * Solve M @p solution = @p right_hand_side for velocity component
-     * @p component; @p solution has the layout of the system's vectors.
+     * Solve M @p solution = @p right_hand_side subject to @p constraints
+     * (lines x_i = b_i on locally owned functions): the constrained
+     * coefficients get b_i, the others solve their rows with the
+     * constrained ones moved to the right-hand side. @p solution has the
+     * layout of the system's vectors.
      */
     virtual void
-    solve(const NodalSystem<dim>       &system,
-          const ParticleShapeData<dim> &shape_data,
-          const VectorType             &right_hand_side,
-          VectorType                   &solution,
-          const unsigned int            component) const = 0;
+    solve(const NodalSystem<dim>          &system,
+          const ParticleShapeData<dim>    &shape_data,
+          const VectorType                &right_hand_side,
+          VectorType                      &solution,
+          const AffineConstraints<double> &constraints) const = 0;
   };
 } // namespace MpmOtm
 

@@ -2,6 +2,7 @@
 #define mpm_otm_grid_system_nodal_system_h
 
 #include <deal.II/base/partitioner.h>
+#include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/la_parallel_vector.h>
 
 #include <mpm_otm/base/checkpoint_state.h>
@@ -25,11 +26,12 @@ namespace MpmOtm
    * The nodal (grid) side of a step: the vectors of nodal masses, momenta,
    * forces, accelerations and velocities, one per component, assembled from
    * the material points (journal Alg. 1, step 4, Eqs. 19-21; thesis
-   * Eqs. 2.27-2.30) and the lists of coefficients that are left out of the
-   * solves: those fixed by a Dirichlet condition (per component), those
-   * whose support holds no material point (no NaN from empty cells) and,
-   * if asked for, those deactivated because their diagonal mass
-   * M_ii = sum_p m_p phi_i(x_p)^2 is below a threshold (thesis Sect. 5.2).
+   * Eqs. 2.27-2.30) and the constraints of the solves (deal.II
+   * AffineConstraints, one per component): the coefficients fixed by a
+   * Dirichlet condition, those whose support holds no material point (no
+   * NaN from empty cells) and, if asked for, those deactivated because
+   * their diagonal mass M_ii = sum_p m_p phi_i(x_p)^2 is below a threshold
+   * (thesis Sect. 5.2) are set to zero.
    * On request it also lists the functions at the edge of the material,
    * which partial lumping needs (thesis Sect. 5.4).
    * Vectors are distributed with ghost entries for every function that a
@@ -40,6 +42,8 @@ namespace MpmOtm
   {
   public:
     using VectorType = LinearAlgebra::distributed::Vector<double>;
+    /// The constraints of each component's solves.
+    using Constraints = std::array<AffineConstraints<double>, dim>;
 
     /**
      * Build the partition and the Dirichlet lists. Functions with
@@ -85,7 +89,7 @@ namespace MpmOtm
 
     /**
      * Sum the contributions of all ranks, stop on a non-finite force or
-     * momentum, and list the functions without material.
+     * momentum, and build constraints().
      */
     void
     finish_assembly();
@@ -99,11 +103,25 @@ namespace MpmOtm
                       const ParticleShapeData<dim> &shape_data);
 
     /**
-     * Locally owned functions left out of the solve for @p component:
-     * fixed by a Dirichlet condition, without material or deactivated.
+     * The constraints of this step's solves, one per velocity component:
+     * homogeneous lines (global indices, locally owned functions only) for
+     * the functions fixed by a Dirichlet condition, without material or
+     * deactivated. Built by finish_assembly(). Prescribed velocities add
+     * inhomogeneous lines to a copy
+     * (BoundaryConditions::make_acceleration_constraints()).
      */
-    std::vector<unsigned int>
-    excluded_functions(const unsigned int component) const;
+    const Constraints &
+    constraints() const;
+
+    /**
+     * The lines of @p constraints as local indices (sorted) and their
+     * inhomogeneities. Only lines x_i = b_i, without entries, are
+     * supported.
+     */
+    void
+    local_lines(const AffineConstraints<double> &constraints,
+                std::vector<unsigned int>       &indices,
+                std::vector<double>             &values) const;
 
     /**
      * Locally owned functions (local indices, sorted) deactivated in this
@@ -177,7 +195,7 @@ namespace MpmOtm
     const ShapeFunctions<dim>                   *shape_functions = nullptr;
     std::shared_ptr<Utilities::MPI::Partitioner> index_partition;
     std::array<std::vector<unsigned int>, dim>   fixed;
-    std::vector<unsigned int>                    empty;
+    Constraints                                  zero_constraints;
     double                                       deactivation_threshold = 0.;
     /// Diagonal of the consistent mass matrix (only with a threshold).
     VectorType                diagonal_mass;

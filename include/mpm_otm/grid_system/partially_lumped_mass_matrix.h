@@ -33,11 +33,11 @@ namespace MpmOtm
     needs_material_boundary() const override;
 
     void
-    solve(const NodalSystem<dim>       &system,
-          const ParticleShapeData<dim> &shape_data,
-          const VectorType             &right_hand_side,
-          VectorType                   &solution,
-          const unsigned int            component) const override;
+    solve(const NodalSystem<dim>          &system,
+          const ParticleShapeData<dim>    &shape_data,
+          const VectorType                &right_hand_side,
+          VectorType                      &solution,
+          const AffineConstraints<double> &constraints) const override;
   };
 } // namespace MpmOtm
 
