@@ -74,7 +74,11 @@ namespace MpmOtm
                             system.acceleration[c],
                             acceleration_constraints[c]);
         boundary_conditions.measure_gaps(material_points, data, system);
-        boundary_conditions.constrain_accelerations(system, time, dt);
+        boundary_conditions.constrain_accelerations(system,
+                                                    mass_matrix,
+                                                    data,
+                                                    time,
+                                                    dt);
         for (unsigned int c = 0; c < dim; ++c)
           system.acceleration[c].update_ghost_values();
       }

@@ -4,6 +4,7 @@
 #include <mpm_otm/base/subsection_names.h>
 #include <mpm_otm/boundary_conditions/boundary_conditions.h>
 #include <mpm_otm/grid/background_grid.h>
+#include <mpm_otm/grid_system/mass_matrix.h>
 #include <mpm_otm/grid_system/nodal_system.h>
 #include <mpm_otm/material_points/material_points.h>
 #include <mpm_otm/shape_functions/particle_shape_data.h>
@@ -521,10 +522,15 @@ namespace MpmOtm
 
   template <int dim>
   void
-  BoundaryConditions<dim>::constrain_accelerations(NodalSystem<dim> &system,
-                                                   const double      time,
-                                                   const double      dt)
+  BoundaryConditions<dim>::constrain_accelerations(
+    NodalSystem<dim>             &system,
+    const MassMatrix<dim>        &mass_matrix,
+    const ParticleShapeData<dim> &shape_data,
+    const double                  time,
+    const double                  dt)
   {
+    if (conditions.empty())
+      return;
     for (auto &condition : conditions)
       {
         condition.in_contact.assign(condition.functions.size(), false);
@@ -565,18 +571,23 @@ namespace MpmOtm
       }
     // The reactions once every condition has acted (a node shared by two
     // conditions counts in both).
+    for (unsigned int c = 0; c < dim; ++c)
+      {
+        if (inertia[c].get_partitioner() !=
+            system.acceleration[c].get_partitioner())
+          inertia[c].reinit(system.acceleration[c].get_partitioner());
+        mass_matrix.vmult(system,
+                          shape_data,
+                          system.acceleration[c],
+                          inertia[c]);
+      }
     for (auto &condition : conditions)
       {
         Tensor<1, dim> reaction;
         for (const unsigned int i : condition.functions)
-          {
-            const double m = system.lumped_mass.local_element(i);
-            if (!(m > 0.))
-              continue;
-            for (unsigned int c = 0; c < dim; ++c)
-              reaction[c] += m * system.acceleration[c].local_element(i) -
-                             system.force[c].local_element(i);
-          }
+          for (unsigned int c = 0; c < dim; ++c)
+            reaction[c] +=
+              inertia[c].local_element(i) - system.force[c].local_element(i);
         condition.reaction_sum += reaction;
         if (condition.type == Type::velocity)
           {

@@ -516,6 +516,18 @@ namespace MpmOtm
 
   template <int dim>
   void
+  ConsistentMassMatrix<dim>::vmult(const NodalSystem<dim>       &system,
+                                   const ParticleShapeData<dim> &shape_data,
+                                   const VectorType             &vector,
+                                   VectorType                   &product) const
+  {
+    multiply(system, shape_data, vector, product, {});
+  }
+
+
+
+  template <int dim>
+  void
   ConsistentMassMatrix<dim>::solve(
     const NodalSystem<dim>          &system,
     const ParticleShapeData<dim>    &shape_data,

@@ -12,6 +12,20 @@ namespace MpmOtm
 
   template <int dim>
   void
+  LumpedMassMatrix<dim>::vmult(const NodalSystem<dim> &system,
+                               const ParticleShapeData<dim> &,
+                               const VectorType &vector,
+                               VectorType       &product) const
+  {
+    for (unsigned int i = 0; i < product.locally_owned_size(); ++i)
+      product.local_element(i) =
+        system.lumped_mass.local_element(i) * vector.local_element(i);
+  }
+
+
+
+  template <int dim>
+  void
   LumpedMassMatrix<dim>::solve(
     const NodalSystem<dim> &system,
     const ParticleShapeData<dim> &,

@@ -24,6 +24,22 @@ namespace MpmOtm
 
   template <int dim>
   void
+  PartiallyLumpedMassMatrix<dim>::vmult(
+    const NodalSystem<dim>       &system,
+    const ParticleShapeData<dim> &shape_data,
+    const VectorType             &vector,
+    VectorType                   &product) const
+  {
+    ConsistentMassMatrix<dim>::vmult(system, shape_data, vector, product);
+    for (const unsigned int i : system.material_boundary_functions())
+      product.local_element(i) =
+        system.lumped_mass.local_element(i) * vector.local_element(i);
+  }
+
+
+
+  template <int dim>
+  void
   PartiallyLumpedMassMatrix<dim>::solve(
     const NodalSystem<dim>          &system,
     const ParticleShapeData<dim>    &shape_data,

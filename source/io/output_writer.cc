@@ -154,6 +154,34 @@ namespace MpmOtm
       std::vector<DataOutBase::Patch<0, dim>> patches;
     };
 
+    /**
+     * DataOut of the grid fields that writes the nodal velocity - separate
+     * coefficient vectors of the family's scalar DoFHandler, data
+     * components 1 to dim after the nodal mass - as one vector, so that
+     * ParaView draws it with glyphs and stream lines.
+     */
+    template <int dim>
+    class GridDataOut : public DataOut<dim>
+    {
+    public:
+      std::vector<
+        std::tuple<unsigned int,
+                   unsigned int,
+                   std::string,
+                   DataComponentInterpretation::DataComponentInterpretation>>
+      get_nonscalar_data_ranges() const override
+      {
+        auto ranges = DataOut<dim>::get_nonscalar_data_ranges();
+        if (dim > 1)
+          ranges.emplace_back(
+            1,
+            dim,
+            "nodal_velocity",
+            DataComponentInterpretation::component_is_part_of_vector);
+        return ranges;
+      }
+    };
+
     std::string
     step_string(const unsigned int step)
     {
@@ -502,7 +530,7 @@ namespace MpmOtm
   {
     // The coefficient fields sum_i c_i phi_i, written in the element the
     // cells carry (for B-splines: their Bernstein form on every cell).
-    DataOut<dim> data_out;
+    GridDataOut<dim> data_out;
     data_out.attach_dof_handler(shape_functions.dof_handler());
     std::array<typename ShapeFunctions<dim>::VectorType, dim + 1> fields;
     system.lumped_mass.update_ghost_values();

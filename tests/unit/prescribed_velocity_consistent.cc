@@ -10,6 +10,8 @@
 // mass coupling: a_1 < 0, a_2 > 0. With the condition applied after the
 // solve (the nodal treatment) they would stay at rest. With a lumped mass
 // matrix the free nodes do not couple to the prescribed one: a_1 = a_2 = 0.
+// The reaction of the condition is what the constrained row leaves over,
+// (M a - f)_0 = sum_j M_0j a_j (lumped: (sum_j M_0j) a_0).
 
 #include <mpm_otm/grid_system/nodal_system.h>
 #include <mpm_otm/material_points/material_points.h>
@@ -27,6 +29,9 @@ set Boundaries = left
 subsection Time
   set End time = 0.1
   set Time step = 0.1
+end
+subsection Output
+  set Interval = 1
 end
 subsection Mesh
   set Lower corner = 0
@@ -84,7 +89,11 @@ main(int argc, char **argv)
             for (unsigned int j = 0; j < 3; ++j)
               M[i][j] += m * phi[i] * phi[j];
         }
-      simulator->run();
+      double reaction = 0.;
+      simulator->run([&](const unsigned int step, const Statistics<1> &stats) {
+        if (step == 1)
+          reaction = stats.boundary_reactions.at(0).first[0];
+      });
 
       double a[3] = {1. / dt, 0., 0.};
       if (mass_matrix == "consistent")
@@ -102,6 +111,12 @@ main(int argc, char **argv)
         expect(mass_matrix + " acceleration " + std::to_string(i),
                system.acceleration[0].local_element(i),
                a[i]);
+      const double row_sum = M[0][0] + M[0][1] + M[0][2];
+      expect(mass_matrix + " reaction",
+             reaction,
+             mass_matrix == "consistent" ?
+               M[0][0] * a[0] + M[0][1] * a[1] + M[0][2] * a[2] :
+               row_sum * a[0]);
       expect(mass_matrix + " prescribed velocity at the end of the step",
              system.velocity[0].local_element(0),
              1.);

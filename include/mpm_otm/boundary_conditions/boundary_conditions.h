@@ -21,6 +21,8 @@ namespace MpmOtm
   template <int dim>
   class BackgroundGrid;
   template <int dim>
+  class MassMatrix;
+  template <int dim>
   class MaterialPoints;
   template <int dim>
   class NodalSystem;
@@ -62,9 +64,10 @@ namespace MpmOtm
    * step by step. The nodes found in contact then keep no normal velocity
    * in the velocities the update scheme computes at the end of the step
    * (MUSL's re-projection), whichever its sign.
-   * The reaction of a condition is the sum of m_i a_i - f_i over its nodes:
-   * the force the boundary exerts on the material (lumped masses; with a
-   * consistent mass matrix an approximation). Fixed and slip conditions on
+   * The reaction of a condition is the sum of (M a - f)_i over its nodes,
+   * with the mass matrix M of the solves: the force the boundary exerts on
+   * the material, which the free nodes' equations M a = f leave over at
+   * the constrained ones. Fixed and slip conditions on
    * sides normal to a coordinate direction also exclude the fixed
    * components from the mass-matrix solves, as the problems' own
    * FixedComponents do.
@@ -135,12 +138,15 @@ namespace MpmOtm
      * Correct the accelerations of the step from @p time to @p time + @p dt
      * (locally owned entries of system.acceleration, solved subject to
      * make_acceleration_constraints()) for friction and slip on inclined
-     * sides, and compute the reactions. Collective.
+     * sides, and compute the reactions with @p mass_matrix, assembled from
+     * @p shape_data. Collective.
      */
     void
-    constrain_accelerations(NodalSystem<dim> &system,
-                            const double      time,
-                            const double      dt);
+    constrain_accelerations(NodalSystem<dim>             &system,
+                            const MassMatrix<dim>        &mass_matrix,
+                            const ParticleShapeData<dim> &shape_data,
+                            const double                  time,
+                            const double                  dt);
 
     /**
      * Impose the conditions on the nodal velocities of the end of the step
@@ -247,7 +253,9 @@ namespace MpmOtm
     void
     find_box_functions(Condition &condition) const;
 
-    std::vector<Condition>     conditions;
+    std::vector<Condition> conditions;
+    /// M a, per component, for the reactions.
+    std::array<LinearAlgebra::distributed::Vector<double>, dim> inertia;
     double                     work_of_prescribed_velocities = 0.;
     MPI_Comm                   communicator                  = MPI_COMM_WORLD;
     const ShapeFunctions<dim> *functions                     = nullptr;

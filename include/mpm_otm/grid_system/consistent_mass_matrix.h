@@ -36,6 +36,12 @@ namespace MpmOtm
              const ParticleShapeData<dim> &shape_data) override;
 
     void
+    vmult(const NodalSystem<dim>       &system,
+          const ParticleShapeData<dim> &shape_data,
+          const VectorType             &vector,
+          VectorType                   &product) const override;
+
+    void
     solve(const NodalSystem<dim>          &system,
           const ParticleShapeData<dim>    &shape_data,
           const VectorType                &right_hand_side,

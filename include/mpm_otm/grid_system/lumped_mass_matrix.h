@@ -18,6 +18,12 @@ namespace MpmOtm
     declare_parameters(ParameterHandler &prm);
 
     void
+    vmult(const NodalSystem<dim>       &system,
+          const ParticleShapeData<dim> &shape_data,
+          const VectorType             &vector,
+          VectorType                   &product) const override;
+
+    void
     solve(const NodalSystem<dim>          &system,
           const ParticleShapeData<dim>    &shape_data,
           const VectorType                &right_hand_side,

@@ -39,6 +39,17 @@ namespace MpmOtm
     {}
 
     /**
+     * @p product = M @p vector on the locally owned entries, with the matrix
+     * the solves use (for the reactions of the boundary conditions).
+     * Collective.
+     */
+    virtual void
+    vmult(const NodalSystem<dim>       &system,
+          const ParticleShapeData<dim> &shape_data,
+          const VectorType             &vector,
+          VectorType                   &product) const = 0;
+
+    /**
      * Solve M @p solution = @p right_hand_side subject to @p constraints
      * (lines x_i = b_i on locally owned functions): the constrained
      * coefficients get b_i, the others solve their rows with the

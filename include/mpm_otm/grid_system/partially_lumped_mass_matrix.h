@@ -33,6 +33,12 @@ namespace MpmOtm
     needs_material_boundary() const override;
 
     void
+    vmult(const NodalSystem<dim>       &system,
+          const ParticleShapeData<dim> &shape_data,
+          const VectorType             &vector,
+          VectorType                   &product) const override;
+
+    void
     solve(const NodalSystem<dim>          &system,
           const ParticleShapeData<dim>    &shape_data,
           const VectorType                &right_hand_side,

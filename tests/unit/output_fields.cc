@@ -1,0 +1,99 @@
+// The VTU files carry the fields the manual promises a ParaView user: the
+// particles' displacement and velocity as vectors, the stress as a tensor
+// with the out-of-plane stress_zz beside it, plastic_strain, det_F and
+// material; the grid's nodal_mass and nodal_velocity as a vector. Vectors
+// and tensors are written with 3 and 9 components in 2D (VTU pads them).
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <mpm_otm/base/subsection_names.h>
+
+#include <fstream>
+#include <iterator>
+
+#include "../tests.h"
+
+using namespace MpmOtm;
+using namespace MpmOtmTests;
+
+const std::string parameters = R"(
+set Dimension = 2
+set Problem = custom
+subsection Time
+  set End time = 1e-4
+  set Time step = 1e-4
+end
+subsection Mesh
+  set Lower corner = 0, 0
+  set Upper corner = 1, 1
+  set Subdivisions = 2, 2
+end
+subsection Material
+  set Model = von Mises
+  set Young's modulus = 1e6
+  set Density = 1
+  subsection von Mises
+    set Yield stress = 1e3
+  end
+end
+subsection Output
+  set Directory = output-fields
+  set Overwrite = true
+  set Write VTU = true
+end
+)";
+
+std::string
+read(const std::string &name)
+{
+  std::ifstream file("output-fields/" + name);
+  check(static_cast<bool>(file), name + " was not written");
+  return std::string((std::istreambuf_iterator<char>(file)),
+                     std::istreambuf_iterator<char>());
+}
+
+void
+expect_field(const std::string &file,
+             const std::string &text,
+             const std::string &name,
+             const unsigned int n_components)
+{
+  // VTU names the components of vectors and tensors only.
+  const std::string tag =
+    "Name=\"" + name + "\" " +
+    (n_components == 1 ?
+       std::string("format") :
+       "NumberOfComponents=\"" + std::to_string(n_components) + "\"");
+  check(text.find(tag) != std::string::npos,
+        file + " must hold " + name + " with " + std::to_string(n_components) +
+          " components");
+  deallog << file << ": " << name << ", " << n_components << " components"
+          << std::endl;
+}
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  initlog();
+  {
+    ParameterHandler prm;
+    Simulator<2>::declare_parameters(prm, SubsectionNames::read(parameters));
+    prm.parse_input_from_string(parameters);
+    static std::ostringstream quiet;
+    Simulator<2>              simulator(MPI_COMM_WORLD, quiet);
+    simulator.parse_parameters(prm);
+    simulator.setup(prm, false);
+    simulator.run();
+  }
+  const std::string particles = read("particles_00001.0.vtu");
+  expect_field("particles", particles, "displacement", 3);
+  expect_field("particles", particles, "velocity", 3);
+  expect_field("particles", particles, "stress", 9);
+  for (const std::string name :
+       {"stress_zz", "plastic_strain", "det_F", "material"})
+    expect_field("particles", particles, name, 1);
+  const std::string grid = read("grid_00001.0.vtu");
+  expect_field("grid", grid, "nodal_mass", 1);
+  expect_field("grid", grid, "nodal_velocity", 3);
+}
