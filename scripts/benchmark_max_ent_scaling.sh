@@ -20,7 +20,7 @@ steps=200
 # ns_per_point_step PRM NODES EXTRA
 ns_per_point_step() {
   cp "$root/prm/$1" run.prm
-  printf 'subsection Time\n set Time step = %s\n set End time = %s\nend\nsubsection Mesh\n set Subdivisions = %s\nend\nsubsection Output\n set Interval = 0\n set Write VTU = false\n set Write particle CSV = false\nend\n%s\n' \
+  printf 'subsection Time\n set Time step = %s\n set End time = %s\nend\nsubsection Mesh\n set Subdivisions = %s\nend\nsubsection Output\n set Interval = 0\n set Format = none\n set Write particle CSV = false\nend\n%s\n' \
     "$(awk "BEGIN{print 1e-5 * 512 / $2}")" "$(awk "BEGIN{print $steps * 1e-5 * 512 / $2}")" "$(($2 - 1))" "$3" >> run.prm
   "$exe" --overwrite run.prm > log
   points=$(grep -o '[0-9]* material points' log | cut -d' ' -f1)

@@ -18,7 +18,7 @@ cd "$work"
 loop_time() {
   steps=$((512000 / $2))
   cp "$root/prm/$1" run.prm
-  printf 'subsection Time\n set End time = %s\nend\nsubsection Mesh\n set Subdivisions = %s\nend\nsubsection Output\n set Interval = 0\n set Write VTU = false\n set Write particle CSV = false\nend\n%s\n' \
+  printf 'subsection Time\n set End time = %s\nend\nsubsection Mesh\n set Subdivisions = %s\nend\nsubsection Output\n set Interval = 0\n set Format = none\n set Write particle CSV = false\nend\n%s\n' \
     "$(awk "BEGIN{print $steps * 1e-5}")" "$(($2 - 1))" "$3" >> run.prm
   "$exe" --overwrite run.prm > log
   t0=$(grep '^step  *0 ' log | sed 's/.*wall time = \([0-9.]*\) s.*/\1/')

@@ -31,7 +31,7 @@ cd "$work"
 # run PRM NX NY EXTRA: runs prm/PRM on NX x NY blocks with EXTRA appended.
 run() {
   cp "$root/prm/$1" run.prm
-  printf 'subsection Mesh\n set Subdivisions = %s, %s\nend\nsubsection Output\n set Directory = run\n set Interval = 0\n set Write VTU = false\n set Write particle CSV = false\nend\n%s\n' \
+  printf 'subsection Mesh\n set Subdivisions = %s, %s\nend\nsubsection Output\n set Directory = run\n set Interval = 0\n set Format = none\n set Write particle CSV = false\nend\n%s\n' \
     "$2" "$3" "$4" >> run.prm
   rm -rf run
   "$exe" run.prm > log 2>&1 || { echo "failed: prm/$1 on $2 x $3 blocks:" >&2; tail -5 log >&2; exit 1; }

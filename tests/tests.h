@@ -100,7 +100,7 @@ namespace MpmOtmTests
                                 "\nsubsection Output\n"
                                 "set Directory = " +
                                 directory +
-                                "\nset Write VTU = false\n"
+                                "\nset Format = none\n"
                                 "set Overwrite = true\n"
                                 "end\n");
     auto simulator =

@@ -18,7 +18,7 @@ cd "$work"
 # Run prm/$1 with extra lines $2 appended; output in ./run.
 run() {
   cp "$root/prm/$1" run.prm
-  printf '%s\nsubsection Output\n set Directory = run\n set Write VTU = false\nend\n' "$2" >> run.prm
+  printf '%s\nsubsection Output\n set Directory = run\n set Format = none\nend\n' "$2" >> run.prm
   rm -rf run
   "$exe" run.prm > /dev/null
 }

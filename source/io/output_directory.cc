@@ -19,13 +19,13 @@ namespace MpmOtm
 
       /**
        * A file or directory that a run writes at a step; the first group
-       * that matched holds the step (none for the .pvd files and the
-       * Powell-Sabin picture).
+       * that matched holds the step (none for the .pvd and .xdmf files and
+       * the Powell-Sabin picture).
        */
       const std::regex step_file(
         "particles-([0-9]+)\\.csv|(?:particles|grid)_([0-9]+)(?:\\.[0-9]+)?"
-        "\\.(?:vtu|pvtu)|checkpoint-([0-9]+)(?:\\.tmp)?|(?:particles|grid)"
-        "\\.pvd|powell-sabin-basis\\.vtu");
+        "\\.(?:vtu|pvtu|h5(?:\\.tmp)?)|checkpoint-([0-9]+)(?:\\.tmp)?|"
+        "(?:particles|grid)\\.(?:pvd|xdmf)|powell-sabin-basis\\.vtu");
 
       /**
        * The step files in @p directory with their steps (-1 for files of
@@ -99,8 +99,12 @@ namespace MpmOtm
       if (!fs::is_directory(directory, error))
         return "";
       std::vector<std::string> found;
-      for (const std::string name :
-           {"statistics.csv", "parameters.prm", "particles.pvd", "grid.pvd"})
+      for (const std::string name : {"statistics.csv",
+                                     "parameters.prm",
+                                     "particles.pvd",
+                                     "grid.pvd",
+                                     "particles.xdmf",
+                                     "grid.xdmf"})
         if (fs::exists(fs::symlink_status(directory + "/" + name, error)))
           found.push_back(name);
       if (found.empty())

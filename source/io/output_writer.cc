@@ -31,14 +31,19 @@ namespace MpmOtm
      * 1D also the stress out of the plane or line), the mean stress
      * tr(sigma)/3 and the von Mises stress sqrt(3 J2) of the
      * three-dimensional stress, det F, volume, mass, material, equivalent
-     * plastic strain, the materials' internal variables and the id.
+     * plastic strain, the materials' internal variables and the id. With
+     * @p stress_as_components the stress is written as its independent
+     * components stress_xx, stress_xy, ... instead of a tensor: deal.II
+     * 9.4's HDF5 writer keeps only three components of a tensor.
      */
     template <int dim>
     class ParticlePatches : public DataOutInterface<0, dim>
     {
     public:
       ParticlePatches(const MaterialPoints<dim>  &material_points,
-                      const MaterialLibrary<dim> &materials)
+                      const MaterialLibrary<dim> &materials,
+                      const bool                  stress_as_components)
+        : stress_as_components(stress_as_components)
       {
         using Layout = PropertyLayout<dim>;
         for (unsigned int d = 0; d < dim; ++d)
@@ -47,7 +52,10 @@ namespace MpmOtm
           names.push_back("velocity");
         for (unsigned int i = 0; i < dim; ++i)
           for (unsigned int j = 0; j < dim; ++j)
-            names.push_back(dim == 1 ? "stress_xx" : "stress");
+            if (dim == 1 || (stress_as_components && j >= i))
+              names.push_back(std::string("stress_") + "xyz"[i] + "xyz"[j]);
+            else if (!stress_as_components)
+              names.push_back("stress");
         if (dim == 2)
           names.push_back("stress_zz");
         if (dim == 1)
@@ -80,7 +88,7 @@ namespace MpmOtm
             const SymmetricTensor<2, dim> sigma =
               Layout::get_stress(properties);
             for (unsigned int i = 0; i < dim; ++i)
-              for (unsigned int j = 0; j < dim; ++j)
+              for (unsigned int j = stress_as_components ? i : 0; j < dim; ++j)
                 patch.data(n++, 0) = sigma[i][j];
             const double out_of_plane =
               Layout::get_out_of_plane_stress(properties);
@@ -136,19 +144,29 @@ namespace MpmOtm
       {
         if (dim == 1)
           return {};
-        return {{0,
-                 dim - 1,
-                 "displacement",
-                 DataComponentInterpretation::component_is_part_of_vector},
-                {dim,
-                 2 * dim - 1,
-                 "velocity",
-                 DataComponentInterpretation::component_is_part_of_vector},
-                {2 * dim,
-                 2 * dim + dim * dim - 1,
-                 "stress",
-                 DataComponentInterpretation::component_is_part_of_tensor}};
+        std::vector<
+          std::tuple<unsigned int,
+                     unsigned int,
+                     std::string,
+                     DataComponentInterpretation::DataComponentInterpretation>>
+          ranges = {{0,
+                     dim - 1,
+                     "displacement",
+                     DataComponentInterpretation::component_is_part_of_vector},
+                    {dim,
+                     2 * dim - 1,
+                     "velocity",
+                     DataComponentInterpretation::component_is_part_of_vector}};
+        if (!stress_as_components)
+          ranges.emplace_back(
+            2 * dim,
+            2 * dim + dim * dim - 1,
+            "stress",
+            DataComponentInterpretation::component_is_part_of_tensor);
+        return ranges;
       }
+
+      const bool stress_as_components;
 
       std::vector<std::string>                names;
       std::vector<DataOutBase::Patch<0, dim>> patches;
@@ -190,66 +208,6 @@ namespace MpmOtm
 
 
 
-    /**
-     * Write step @p step of the time series @p name (particles or grid) to
-     * @p directory: every rank its piece NAME_NNNNN.R.vtu of @p patches;
-     * then, once every piece is complete, rank 0 the index NAME_NNNNN.pvtu
-     * and the time series NAME.pvd of @p records, to which the step is
-     * added at @p time. Each file is written with
-     * OutputDirectory::write_file_atomically(); a failed write stops all ranks,
-     * naming the file. Collective.
-     */
-    template <int patch_dim, int dim>
-    void
-    write_time_series_step(const DataOutInterface<patch_dim, dim> &patches,
-                           const std::string                      &directory,
-                           const std::string                      &name,
-                           const unsigned int                      step,
-                           const double                            time,
-                           std::vector<std::pair<double, std::string>> &records,
-                           const MPI_Comm communicator)
-    {
-      const unsigned int rank = Utilities::MPI::this_mpi_process(communicator);
-      const unsigned int n_ranks =
-        Utilities::MPI::n_mpi_processes(communicator);
-      const unsigned int digits = Utilities::needed_digits(n_ranks - 1);
-      const std::string  base   = name + "_" + step_string(step);
-      const auto         piece  = [&](const unsigned int r) {
-        return base + "." + Utilities::int_to_string(r, digits) + ".vtu";
-      };
-      const std::string advice =
-        "Free space on the disk of Output/Directory or choose another one.";
-      stop_if_any_rank_failed(
-        communicator,
-        OutputDirectory::write_file_atomically(directory + "/" + piece(rank),
-                                               [&](std::ostream &out) {
-                                                 patches.write_vtu(out);
-                                               }),
-        "",
-        advice);
-
-      const std::string index = base + ".pvtu";
-      records.emplace_back(time, index);
-      std::string problem;
-      if (rank == 0)
-        {
-          std::vector<std::string> pieces;
-          for (unsigned int r = 0; r < n_ranks; ++r)
-            pieces.push_back(piece(r));
-          problem = OutputDirectory::write_file_atomically(
-            directory + "/" + index,
-            [&](std::ostream &out) {
-              patches.write_pvtu_record(out, pieces);
-            });
-          if (problem.empty())
-            problem = OutputDirectory::write_file_atomically(
-              directory + "/" + name + ".pvd",
-              [&](std::ostream &out) {
-                DataOutBase::write_pvd_record(out, records);
-              });
-        }
-      stop_if_any_rank_failed(communicator, problem, "", advice);
-    }
   } // namespace
 
 
@@ -268,9 +226,9 @@ namespace MpmOtm
       "false",
       Patterns::Bool(),
       "Whether a run may write into a directory that holds another run's "
-      "output (a statistics.csv, parameters.prm or .pvd file); it then "
+      "output (a statistics.csv, parameters.prm, .pvd or .xdmf file); it then "
       "first removes that run's step files (particles-NNNNN.csv, "
-      "particles_NNNNN.*, grid_NNNNN.*, the .pvd files). false: such a "
+      "particles_NNNNN.*, grid_NNNNN.*, the .pvd and .xdmf files). false: such a "
       "directory stops the run before anything is written. The command "
       "line option --overwrite sets it.");
     prm.declare_entry("Interval",
@@ -283,11 +241,18 @@ namespace MpmOtm
                       Patterns::Bool(),
                       "Also write particles-NNNNN.csv with one row per "
                       "material point.");
-    prm.declare_entry("Write VTU",
-                      "true",
-                      Patterns::Bool(),
-                      "Write particle and grid VTU files with PVD time "
-                      "series for ParaView.");
+    prm.declare_entry(
+      "Format",
+      "vtu",
+      Patterns::Selection("vtu|hdf5|none"),
+      "Files of the particle and grid fields, which ParaView opens: vtu - "
+      "per output step one file per rank (particles_NNNNN.R.vtu, "
+      "grid_NNNNN.R.vtu) with the index particles_NNNNN.pvtu, over the "
+      "steps particles.pvd and grid.pvd; hdf5 - per output step one file "
+      "that all ranks write together (particles_NNNNN.h5, grid_NNNNN.h5), "
+      "over the steps particles.xdmf and grid.xdmf (for runs on many ranks "
+      "or with many points); none - no field files (statistics.csv and the "
+      "CSV files only).");
     prm.declare_entry(
       "Powell-Sabin basis at",
       "",
@@ -309,7 +274,10 @@ namespace MpmOtm
     output_directory         = prm.get("Directory");
     interval                 = prm.get_integer("Interval");
     write_csv                = prm.get_bool("Write particle CSV");
-    write_vtu                = prm.get_bool("Write VTU");
+    const std::string format = prm.get("Format");
+    write_fields             = (format != "none");
+    field_format =
+      (format == "hdf5") ? TimeSeries::Format::hdf5 : TimeSeries::Format::vtu;
     overwrite                = prm.get_bool("Overwrite");
     powell_sabin_basis_point = Utilities::string_to_double(
       Utilities::split_string_list(prm.get("Powell-Sabin basis at")));
@@ -402,20 +370,8 @@ namespace MpmOtm
   void
   OutputWriter<dim>::save(CheckpointState &state) const
   {
-    // Time and step of each record; the file names follow from the step.
-    for (const auto &[name, records] :
-         {std::make_pair("particles", &particle_records),
-          std::make_pair("grid", &grid_records)})
-      {
-        std::vector<double> values;
-        for (const auto &[time, file] : *records)
-          {
-            values.push_back(time);
-            values.push_back(std::stoul(file.substr(file.rfind('_') + 1)));
-          }
-        state.set_shared(std::string("output/") + name + " time series",
-                         values);
-      }
+    particle_series.save(state);
+    grid_series.save(state);
   }
 
 
@@ -424,32 +380,12 @@ namespace MpmOtm
   void
   OutputWriter<dim>::load(const CheckpointState &state)
   {
-    std::string problem;
-    for (const auto &[name, records] :
-         {std::make_pair("particles", &particle_records),
-          std::make_pair("grid", &grid_records)})
+    for (TimeSeries *series : {&particle_series, &grid_series})
       {
-        const auto &values =
-          state.shared(std::string("output/") + name + " time series");
-        records->clear();
-        for (unsigned int k = 0; k + 1 < values.size(); k += 2)
-          records->emplace_back(
-            values[k],
-            std::string(name) + "_" +
-              step_string(static_cast<unsigned int>(values[k + 1])) + ".pvtu");
-        if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0 &&
-            write_vtu && problem.empty())
-          problem = OutputDirectory::write_file_atomically(
-            output_directory + "/" + name + ".pvd",
-            [&](std::ostream &out) {
-              DataOutBase::write_pvd_record(out, *records);
-            });
+        series->load(state);
+        if (write_fields)
+          series->write_index(output_directory, field_format, mpi_communicator);
       }
-    stop_if_any_rank_failed(
-      mpi_communicator,
-      problem,
-      "",
-      "Free space on the disk of Output/Directory or choose another one.");
   }
 
 
@@ -474,10 +410,10 @@ namespace MpmOtm
                            NodalSystem<dim>          &system,
                            const Statistics<dim>     &statistics)
   {
-    if (write_vtu)
+    if (write_fields)
       {
-        write_particle_vtu(step, time, material_points);
-        write_grid_vtu(step, time, grid, shape_functions, system);
+        write_particle_fields(step, time, material_points);
+        write_grid_fields(step, time, grid, shape_functions, system);
       }
     std::string problem;
     if (write_csv)
@@ -503,30 +439,33 @@ namespace MpmOtm
 
   template <int dim>
   void
-  OutputWriter<dim>::write_particle_vtu(
+  OutputWriter<dim>::write_particle_fields(
     const unsigned int         step,
     const double               time,
     const MaterialPoints<dim> &material_points)
   {
-    ParticlePatches<dim> patches(material_points, *materials);
-    write_time_series_step(patches,
-                           output_directory,
-                           "particles",
-                           step,
-                           time,
-                           particle_records,
-                           mpi_communicator);
+    ParticlePatches<dim> patches(material_points,
+                                 *materials,
+                                 field_format == TimeSeries::Format::hdf5);
+    particle_series.write(patches,
+                          output_directory,
+                          field_format,
+                          step,
+                          time,
+                          ReferenceCells::Vertex,
+                          mpi_communicator);
   }
 
 
 
   template <int dim>
   void
-  OutputWriter<dim>::write_grid_vtu(const unsigned int         step,
-                                    const double               time,
-                                    const BackgroundGrid<dim> &grid,
-                                    const ShapeFunctions<dim> &shape_functions,
-                                    NodalSystem<dim>          &system)
+  OutputWriter<dim>::write_grid_fields(
+    const unsigned int         step,
+    const double               time,
+    const BackgroundGrid<dim> &grid,
+    const ShapeFunctions<dim> &shape_functions,
+    NodalSystem<dim>          &system)
   {
     // The coefficient fields sum_i c_i phi_i, written in the element the
     // cells carry (for B-splines: their Bernstein form on every cell).
@@ -550,13 +489,13 @@ namespace MpmOtm
     data_out.add_data_vector(subdomain, "subdomain");
     data_out.build_patches(grid.mapping(),
                            shape_functions.dof_handler().get_fe().degree);
-    write_time_series_step(data_out,
-                           output_directory,
-                           "grid",
-                           step,
-                           time,
-                           grid_records,
-                           mpi_communicator);
+    grid_series.write(data_out,
+                      output_directory,
+                      field_format,
+                      step,
+                      time,
+                      grid.triangulation().get_reference_cells()[0],
+                      mpi_communicator);
   }
 
 

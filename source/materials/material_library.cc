@@ -191,7 +191,7 @@ namespace MpmOtm
     std::vector<std::string> result;
     for (unsigned int id = 0; id < materials.size(); ++id)
       for (const auto &variable : materials[id]->internal_variables())
-        result.push_back(names[id] + "/" + variable);
+        result.push_back(names[id] + "." + variable);
     return result;
   }
 

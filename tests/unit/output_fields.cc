@@ -39,7 +39,7 @@ end
 subsection Output
   set Directory = output-fields
   set Overwrite = true
-  set Write VTU = true
+  set Format = vtu
 end
 )";
 

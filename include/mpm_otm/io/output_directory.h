@@ -29,9 +29,9 @@ namespace MpmOtm
 
     /**
      * Prepare @p directory for a new run: if it holds another run's output
-     * (a statistics.csv, parameters.prm or .pvd file), refuse unless
-     * @p overwrite, and then remove that run's step files, .pvd files and
-     * checkpoints; nothing else in the directory is touched.
+     * (a statistics.csv, parameters.prm, .pvd or .xdmf file), refuse unless
+     * @p overwrite, and then remove that run's step files, .pvd and .xdmf files
+     * and checkpoints; nothing else in the directory is touched.
      */
     std::string
     clear_previous_run(const std::string &directory, const bool overwrite);

@@ -6,6 +6,7 @@
 
 #include <mpm_otm/base/checkpoint_state.h>
 #include <mpm_otm/io/statistics.h>
+#include <mpm_otm/io/time_series.h>
 
 #include <fstream>
 #include <string>
@@ -29,14 +30,14 @@ namespace MpmOtm
 
   /**
    * Everything a run writes to its output directory (ARCHITECTURE.md
-   * "Output"): parameters.prm as used; particles-NNNNN.vtu/.pvtu and
-   * grid-NNNNN.vtu/.pvtu with the time series particles.pvd and grid.pvd for
-   * ParaView; statistics.csv with one row per output step; and, when asked,
+   * "Output"): parameters.prm as used; the particle and grid fields as two
+   * TimeSeries for ParaView (VTU with .pvtu and .pvd, or HDF5 with .xdmf);
+   * statistics.csv with one row per output step; and, when asked,
    * particles-NNNNN.csv with one row per material point sorted by id. NNNNN
    * is the time-step number; output is written at step 0, every Interval
    * steps and at the end time. Files are written under a temporary name and
-   * renamed when complete, and an index (.pvtu, .pvd) only after every file
-   * it names is complete, so that a run killed at any moment leaves
+   * renamed when complete, and an index (.pvtu, .pvd, .xdmf) only after every
+   * file it names is complete, so that a run killed at any moment leaves
    * readable output; a failed write (a full disk) stops the run on all
    * ranks with a message naming the file.
    */
@@ -127,16 +128,16 @@ namespace MpmOtm
 
   private:
     void
-    write_particle_vtu(const unsigned int         step,
-                       const double               time,
-                       const MaterialPoints<dim> &material_points);
+    write_particle_fields(const unsigned int         step,
+                          const double               time,
+                          const MaterialPoints<dim> &material_points);
 
     void
-    write_grid_vtu(const unsigned int         step,
-                   const double               time,
-                   const BackgroundGrid<dim> &grid,
-                   const ShapeFunctions<dim> &shape_functions,
-                   NodalSystem<dim>          &system);
+    write_grid_fields(const unsigned int         step,
+                      const double               time,
+                      const BackgroundGrid<dim> &grid,
+                      const ShapeFunctions<dim> &shape_functions,
+                      NodalSystem<dim>          &system);
 
     /**
      * Write particles-NNNNN.csv (rank 0; the other ranks send their rows).
@@ -156,18 +157,19 @@ namespace MpmOtm
                      const double           time,
                      const Statistics<dim> &statistics) const;
 
-    std::string  output_directory;
-    unsigned int interval  = 0;
-    bool         write_csv = false;
-    bool         write_vtu = true;
-    bool         overwrite = false;
+    std::string        output_directory;
+    unsigned int       interval     = 0;
+    bool               write_csv    = false;
+    bool               write_fields = true;
+    TimeSeries::Format field_format = TimeSeries::Format::vtu;
+    bool               overwrite    = false;
     /// Where to show the Powell-Sabin functions (empty: nowhere).
     std::vector<double>         powell_sabin_basis_point;
     MPI_Comm                    mpi_communicator           = MPI_COMM_WORLD;
     const MaterialLibrary<dim> *materials                  = nullptr;
     bool                        write_gravitational_energy = false;
-    std::vector<std::pair<double, std::string>> particle_records;
-    std::vector<std::pair<double, std::string>> grid_records;
+    TimeSeries                  particle_series{"particles"};
+    TimeSeries                  grid_series{"grid"};
   };
 } // namespace MpmOtm
 

@@ -107,7 +107,7 @@ namespace MpmOtm
     n_properties() const;
 
     /**
-     * Names of all internal variables, "<material>/<variable>" (in the order
+     * Names of all internal variables, "<material>.<variable>" (in the order
      * of their places), for output.
      */
     std::vector<std::string>
