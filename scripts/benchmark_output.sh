@@ -8,11 +8,12 @@
 # (Format = none, from the timer's sections other than output), and per
 # format the seconds per output (TimerOutput section "output", divided by
 # the 3 outputs) and that as a fraction of 100 steps.
-# Usage: scripts/benchmark_output.sh [path to mpm-otm] [NP]
+# Usage: scripts/benchmark_output.sh [path to mpm-otm] [NP] [cells "NX, NY"]
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
-exe=${1:-$root/build-release/mpm-otm}
+exe=$(realpath "${1:-$root/build-release/mpm-otm}")
 np=${2:-1}
+cells=${3:-1000, 250}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cd "$work"
@@ -20,7 +21,7 @@ cd "$work"
 # run FORMAT: prints "seconds_of_all_sections seconds_of_output"
 run() {
   cp "$root/prm/performance-bar-2d.prm" run.prm
-  printf 'subsection Mesh\n set Subdivisions = 1000, 250\nend\nsubsection Time\n set End time = 2e-2\nend\nsubsection Output\n set Directory = out-%s\n set Interval = 100\n set Format = %s\nend\n' "$1" "$1" >> run.prm
+  printf 'subsection Mesh\n set Subdivisions = %s\nend\nsubsection Time\n set End time = 2e-2\nend\nsubsection Output\n set Directory = out-%s\n set Interval = 100\n set Format = %s\nend\n' "$cells" "$1" "$1" >> run.prm
   mpirun -np "$np" "$exe" --overwrite run.prm > log 2>&1
   awk -F'|' '/^\| (output|shape functions|particle to grid|solve|grid to particle|move grid)/ {
       gsub(/ /, "", $4); sub(/s$/, "", $4); total += $4; if ($2 ~ /output/) out = $4 }

@@ -69,9 +69,33 @@ namespace MpmOtmTests
   }
 
   /**
+   * Build a simulator from the parameter file contents @p text, as the
+   * program does (quiet: its report goes nowhere); resume from the newest
+   * checkpoint in the output directory if @p resume.
+   */
+  template <int dim>
+  std::unique_ptr<MpmOtm::Simulator<dim>>
+  simulator_from_text(const std::string &text,
+                      const MPI_Comm     communicator = MPI_COMM_WORLD,
+                      const bool         resume       = false)
+  {
+    static std::ostringstream quiet;
+    ParameterHandler          prm;
+    MpmOtm::Simulator<dim>::declare_parameters(prm,
+                                               MpmOtm::SubsectionNames::read(
+                                                 text));
+    prm.parse_input_from_string(text);
+    auto simulator =
+      std::make_unique<MpmOtm::Simulator<dim>>(communicator, quiet);
+    simulator->parse_parameters(prm);
+    simulator->setup(prm, resume);
+    return simulator;
+  }
+
+  /**
    * Build a simulator from prm/@p name with the lines @p changes appended
-   * (as a user would append them) and VTU output switched off; output goes
-   * to the test's directory @p directory.
+   * (as a user would append them) and field output switched off; output
+   * goes to the test's directory @p directory.
    */
   template <int dim>
   std::unique_ptr<MpmOtm::Simulator<dim>>
@@ -81,8 +105,7 @@ namespace MpmOtmTests
                  const MPI_Comm     communicator = MPI_COMM_WORLD,
                  const bool         resume       = false)
   {
-    static std::ostringstream quiet;
-    std::string               text;
+    std::string text;
     if (!name.empty())
       {
         std::ifstream     file(prm_file(name));
@@ -90,24 +113,15 @@ namespace MpmOtmTests
         contents << file.rdbuf();
         text = contents.str();
       }
-    ParameterHandler prm;
-    MpmOtm::Simulator<dim>::declare_parameters(prm,
-                                               MpmOtm::SubsectionNames::read(
-                                                 text + "\n" + changes));
-    if (!name.empty())
-      prm.parse_input(prm_file(name));
-    prm.parse_input_from_string(changes +
-                                "\nsubsection Output\n"
-                                "set Directory = " +
-                                directory +
-                                "\nset Format = none\n"
-                                "set Overwrite = true\n"
-                                "end\n");
-    auto simulator =
-      std::make_unique<MpmOtm::Simulator<dim>>(communicator, quiet);
-    simulator->parse_parameters(prm);
-    simulator->setup(prm, resume);
-    return simulator;
+    return simulator_from_text<dim>(text + "\n" + changes +
+                                      "\nsubsection Output\n"
+                                      "set Directory = " +
+                                      directory +
+                                      "\nset Format = none\n"
+                                      "set Overwrite = true\n"
+                                      "end\n",
+                                    communicator,
+                                    resume);
   }
 
   /**

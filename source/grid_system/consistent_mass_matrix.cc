@@ -521,7 +521,13 @@ namespace MpmOtm
                                    const VectorType             &vector,
                                    VectorType                   &product) const
   {
-    multiply(system, shape_data, vector, product, {});
+    const std::vector<unsigned int> none;
+    if (use_matrix)
+      SparseMassOperator<dim>(row_offsets, columns, entries, none)
+        .vmult(product, vector);
+    else
+      ParticleMassOperator<dim>(shape_data, system.particle_mass, none)
+        .vmult(product, vector);
   }
 
 
@@ -544,25 +550,6 @@ namespace MpmOtm
                      solution,
                      prescribed,
                      values);
-  }
-
-
-
-  template <int dim>
-  void
-  ConsistentMassMatrix<dim>::multiply(
-    const NodalSystem<dim>          &system,
-    const ParticleShapeData<dim>    &shape_data,
-    const VectorType                &vector,
-    VectorType                      &product,
-    const std::vector<unsigned int> &excluded) const
-  {
-    if (use_matrix)
-      SparseMassOperator<dim>(row_offsets, columns, entries, excluded)
-        .vmult(product, vector);
-    else
-      ParticleMassOperator<dim>(shape_data, system.particle_mass, excluded)
-        .vmult(product, vector);
   }
 
 
@@ -598,7 +585,7 @@ namespace MpmOtm
         product.reinit(right_hand_side, true);
         for (unsigned int k = 0; k < prescribed.size(); ++k)
           lifted.local_element(prescribed[k]) = values[k];
-        multiply(system, shape_data, lifted, product, {});
+        ConsistentMassMatrix<dim>::vmult(system, shape_data, lifted, product);
         rhs -= product;
       }
     for (const unsigned int i : prescribed)

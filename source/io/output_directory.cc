@@ -18,14 +18,15 @@ namespace MpmOtm
       namespace fs = std::filesystem;
 
       /**
-       * A file or directory that a run writes at a step; the first group
-       * that matched holds the step (none for the .pvd and .xdmf files and
-       * the Powell-Sabin picture).
+       * A file or directory that a run writes at a step, or its temporary
+       * name (.tmp) while it is written; the first group that matched holds
+       * the step (none for the .pvd and .xdmf files and the Powell-Sabin
+       * picture).
        */
       const std::regex step_file(
-        "particles-([0-9]+)\\.csv|(?:particles|grid)_([0-9]+)(?:\\.[0-9]+)?"
-        "\\.(?:vtu|pvtu|h5(?:\\.tmp)?)|checkpoint-([0-9]+)(?:\\.tmp)?|"
-        "(?:particles|grid)\\.(?:pvd|xdmf)|powell-sabin-basis\\.vtu");
+        "(?:particles-([0-9]+)\\.csv|(?:particles|grid)_([0-9]+)(?:\\.[0-9]+)?"
+        "\\.(?:vtu|pvtu|h5)|(?:particles|grid)\\.(?:pvd|xdmf)|"
+        "powell-sabin-basis\\.vtu)(?:\\.tmp)?|checkpoint-([0-9]+)(?:\\.tmp)?");
 
       /**
        * The step files in @p directory with their steps (-1 for files of
@@ -157,10 +158,10 @@ namespace MpmOtm
       std::string problem = list_step_files(directory, files);
       for (unsigned int k = 0; k < files.size() && problem.empty(); ++k)
         {
-          const bool unfinished_checkpoint =
-            files[k].first.extension() == ".tmp";
-          if (files[k].second > static_cast<long>(step) ||
-              unfinished_checkpoint)
+          // An interrupted write: a checkpoint or a file under its
+          // temporary name.
+          const bool unfinished = files[k].first.extension() == ".tmp";
+          if (files[k].second > static_cast<long>(step) || unfinished)
             problem = remove_path(files[k].first);
         }
       if (!problem.empty())

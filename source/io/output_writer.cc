@@ -7,6 +7,7 @@
 #include <mpm_otm/grid_system/nodal_system.h>
 #include <mpm_otm/io/output_directory.h>
 #include <mpm_otm/io/output_writer.h>
+#include <mpm_otm/io/particle_patches.h>
 #include <mpm_otm/material_points/material_points.h>
 #include <mpm_otm/materials/material_library.h>
 #include <mpm_otm/shape_functions/powell_sabin.h>
@@ -16,162 +17,13 @@
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
-#include <functional>
 #include <iomanip>
-#include <regex>
 #include <sstream>
 
 namespace MpmOtm
 {
   namespace
   {
-    /**
-     * The material points of this rank as zero-dimensional patches with
-     * displacement and velocity (vectors), the stress (a tensor; in 2D and
-     * 1D also the stress out of the plane or line), the mean stress
-     * tr(sigma)/3 and the von Mises stress sqrt(3 J2) of the
-     * three-dimensional stress, det F, volume, mass, material, equivalent
-     * plastic strain, the materials' internal variables and the id. With
-     * @p stress_as_components the stress is written as its independent
-     * components stress_xx, stress_xy, ... instead of a tensor: deal.II
-     * 9.4's HDF5 writer keeps only three components of a tensor.
-     */
-    template <int dim>
-    class ParticlePatches : public DataOutInterface<0, dim>
-    {
-    public:
-      ParticlePatches(const MaterialPoints<dim>  &material_points,
-                      const MaterialLibrary<dim> &materials,
-                      const bool                  stress_as_components)
-        : stress_as_components(stress_as_components)
-      {
-        using Layout = PropertyLayout<dim>;
-        for (unsigned int d = 0; d < dim; ++d)
-          names.push_back("displacement");
-        for (unsigned int d = 0; d < dim; ++d)
-          names.push_back("velocity");
-        for (unsigned int i = 0; i < dim; ++i)
-          for (unsigned int j = 0; j < dim; ++j)
-            if (dim == 1 || (stress_as_components && j >= i))
-              names.push_back(std::string("stress_") + "xyz"[i] + "xyz"[j]);
-            else if (!stress_as_components)
-              names.push_back("stress");
-        if (dim == 2)
-          names.push_back("stress_zz");
-        if (dim == 1)
-          names.push_back("stress_lateral");
-        names.insert(names.end(),
-                     {"mean_stress",
-                      "von_mises_stress",
-                      "det_F",
-                      "volume",
-                      "mass",
-                      "material",
-                      "plastic_strain"});
-        const auto internal = materials.internal_variable_names();
-        names.insert(names.end(), internal.begin(), internal.end());
-        names.push_back("id");
-
-        for (const auto &particle : material_points.particle_handler())
-          {
-            const auto                 properties = particle.get_properties();
-            DataOutBase::Patch<0, dim> patch;
-            patch.vertices[0] = particle.get_location();
-            patch.data.reinit(names.size(), 1);
-            unsigned int     n = 0;
-            const Point<dim> X(
-              Layout::get_vector(properties, Layout::initial_position));
-            for (unsigned int d = 0; d < dim; ++d)
-              patch.data(n++, 0) = particle.get_location()[d] - X[d];
-            for (unsigned int d = 0; d < dim; ++d)
-              patch.data(n++, 0) = properties[Layout::velocity + d];
-            const SymmetricTensor<2, dim> sigma =
-              Layout::get_stress(properties);
-            for (unsigned int i = 0; i < dim; ++i)
-              for (unsigned int j = stress_as_components ? i : 0; j < dim; ++j)
-                patch.data(n++, 0) = sigma[i][j];
-            const double out_of_plane =
-              Layout::get_out_of_plane_stress(properties);
-            if (dim < 3)
-              patch.data(n++, 0) = out_of_plane;
-            // The three-dimensional stress: plane strain or uniaxial strain.
-            SymmetricTensor<2, 3> full;
-            for (unsigned int i = 0; i < dim; ++i)
-              for (unsigned int j = i; j < dim; ++j)
-                full[i][j] = sigma[i][j];
-            for (unsigned int d = dim; d < 3; ++d)
-              full[d][d] = out_of_plane;
-            patch.data(n++, 0) = trace(full) / 3.;
-            patch.data(n++, 0) = std::sqrt(1.5) * deviator(full).norm();
-            patch.data(n++, 0) =
-              determinant(Layout::get_deformation_gradient(properties));
-            patch.data(n++, 0)       = Layout::volume(properties);
-            patch.data(n++, 0)       = properties[Layout::mass];
-            const unsigned int id    = Layout::get_material_id(properties);
-            patch.data(n++, 0)       = id;
-            const unsigned int first = materials.first_internal_variable(id);
-            patch.data(n++, 0)       = materials[id].equivalent_plastic_strain(
-              ArrayView<const double>(properties.data() + first,
-                                      materials.n_internal_variables(id)));
-            for (unsigned int k = Layout::n_fixed_properties;
-                 k < properties.size();
-                 ++k)
-              patch.data(n++, 0) = properties[k];
-            patch.data(n++, 0) = particle.get_id();
-            patches.push_back(patch);
-          }
-      }
-
-    private:
-      const std::vector<DataOutBase::Patch<0, dim>> &
-      get_patches() const override
-      {
-        return patches;
-      }
-
-      std::vector<std::string>
-      get_dataset_names() const override
-      {
-        return names;
-      }
-
-      std::vector<
-        std::tuple<unsigned int,
-                   unsigned int,
-                   std::string,
-                   DataComponentInterpretation::DataComponentInterpretation>>
-      get_nonscalar_data_ranges() const override
-      {
-        if (dim == 1)
-          return {};
-        std::vector<
-          std::tuple<unsigned int,
-                     unsigned int,
-                     std::string,
-                     DataComponentInterpretation::DataComponentInterpretation>>
-          ranges = {{0,
-                     dim - 1,
-                     "displacement",
-                     DataComponentInterpretation::component_is_part_of_vector},
-                    {dim,
-                     2 * dim - 1,
-                     "velocity",
-                     DataComponentInterpretation::component_is_part_of_vector}};
-        if (!stress_as_components)
-          ranges.emplace_back(
-            2 * dim,
-            2 * dim + dim * dim - 1,
-            "stress",
-            DataComponentInterpretation::component_is_part_of_tensor);
-        return ranges;
-      }
-
-      const bool stress_as_components;
-
-      std::vector<std::string>                names;
-      std::vector<DataOutBase::Patch<0, dim>> patches;
-    };
-
     /**
      * DataOut of the grid fields that writes the nodal velocity - separate
      * coefficient vectors of the family's scalar DoFHandler, data
@@ -275,7 +127,11 @@ namespace MpmOtm
     interval                 = prm.get_integer("Interval");
     write_csv                = prm.get_bool("Write particle CSV");
     const std::string format = prm.get("Format");
-    write_fields             = (format != "none");
+    AssertThrow(dim > 1 || format != "hdf5",
+                ExcMessage("Output/Format = hdf5 needs Dimension = 2 or 3 "
+                           "(deal.II's XDMF index has no one-dimensional "
+                           "geometry); use vtu or none in 1D."));
+    write_fields = (format != "none");
     field_format =
       (format == "hdf5") ? TimeSeries::Format::hdf5 : TimeSeries::Format::vtu;
     overwrite                = prm.get_bool("Overwrite");
@@ -380,9 +236,10 @@ namespace MpmOtm
   void
   OutputWriter<dim>::load(const CheckpointState &state)
   {
+    // A run resumed with another format starts new series.
     for (TimeSeries *series : {&particle_series, &grid_series})
       {
-        series->load(state);
+        series->load(state, field_format);
         if (write_fields)
           series->write_index(output_directory, field_format, mpi_communicator);
       }
@@ -452,7 +309,6 @@ namespace MpmOtm
                           field_format,
                           step,
                           time,
-                          ReferenceCells::Vertex,
                           mpi_communicator);
   }
 

@@ -3,8 +3,12 @@
 
 #include <mpm_otm/base/collective_error.h>
 #include <mpm_otm/io/output_directory.h>
+#include <mpm_otm/io/particle_patches.h>
 #include <mpm_otm/io/time_series.h>
 
+#include <boost/serialization/string.hpp>
+#include <boost/serialization/utility.hpp>
+#include <boost/serialization/vector.hpp>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -66,7 +70,6 @@ namespace MpmOtm
     space_dimension            = spacedim;
     reference_cell             = cell;
     std::string problem;
-    Step        written{time, step, 0, 0};
     if (format == Format::vtu)
       {
         const unsigned int digits = Utilities::needed_digits(n_ranks - 1);
@@ -95,42 +98,119 @@ namespace MpmOtm
       }
     else
       {
-        // All ranks write one file together, under a temporary name that
-        // rank 0 renames once every rank is done.
         DataOutBase::DataOutFilter filter(
           DataOutBase::DataOutFilterFlags(false, true));
         data.write_filtered_data(filter);
-        const std::string file      = directory + "/" + base + ".h5";
-        const std::string temporary = file + ".tmp";
-        try
-          {
-            data.write_hdf5_parallel(filter, temporary, communicator);
-          }
-        catch (const std::exception &error)
-          {
-            problem = "Could not write <" + file + ">: " + error.what();
-          }
-        stop_if_any_rank_failed(communicator, problem, "", disk_advice);
-        if (rank == 0)
-          {
-            std::error_code error;
-            std::filesystem::rename(temporary, file, error);
-            if (error)
-              problem =
-                "Could not write <" + file + ">: " + error.message() + ".";
-          }
-        written.n_nodes =
-          Utilities::MPI::sum<std::uint64_t>(filter.n_nodes(), communicator);
-        written.n_cells =
-          Utilities::MPI::sum<std::uint64_t>(filter.n_cells(), communicator);
-        data_sets.clear();
+        // A rank without cells has an empty filter (and an invalid count of
+        // cells); the index takes the data sets of the first rank with some.
+        const bool has_cells = filter.n_data_sets() > 0;
+        std::vector<std::pair<std::string, unsigned int>> own_sets;
         for (unsigned int i = 0; i < filter.n_data_sets(); ++i)
-          data_sets.emplace_back(filter.get_data_set_name(i),
-                                 filter.get_data_set_dim(i));
+          own_sets.emplace_back(filter.get_data_set_name(i),
+                                filter.get_data_set_dim(i));
+        data_sets.clear();
+        for (const auto &sets :
+             Utilities::MPI::all_gather(communicator, own_sets))
+          if (data_sets.empty())
+            data_sets = sets;
+        write_hdf5_step(
+          directory,
+          step,
+          time,
+          has_cells ? filter.n_nodes() : 0,
+          has_cells ? filter.n_cells() : 0,
+          [&](const std::string &file_name) {
+            data.write_hdf5_parallel(filter, file_name, communicator);
+          },
+          communicator);
+        return;
       }
     stop_if_any_rank_failed(communicator, problem, "", disk_advice);
-    steps.push_back(written);
+    format_of_steps = Format::vtu;
+    steps.push_back({time, step, 0, 0});
     write_index(directory, format, communicator);
+  }
+
+
+
+  template <int dim>
+  void
+  TimeSeries::write(const ParticlePatches<dim> &points,
+                    const std::string          &directory,
+                    const Format                format,
+                    const unsigned int          step,
+                    const double                time,
+                    const MPI_Comm              communicator)
+  {
+    if (format == Format::vtu)
+      {
+        write(static_cast<const DataOutInterface<0, dim> &>(points),
+              directory,
+              format,
+              step,
+              time,
+              ReferenceCells::Vertex,
+              communicator);
+        return;
+      }
+    // deal.II's DataOutFilter takes most of the time of write_hdf5_parallel
+    // (a map of all points); the patches write their points directly.
+    patch_dimension = 0;
+    space_dimension = dim;
+    reference_cell  = ReferenceCells::Vertex;
+    data_sets       = points.data_sets();
+    write_hdf5_step(
+      directory,
+      step,
+      time,
+      points.n_points(),
+      points.n_points(),
+      [&](const std::string &file_name) {
+        points.write_hdf5(file_name, communicator);
+      },
+      communicator);
+  }
+
+
+
+  void
+  TimeSeries::write_hdf5_step(
+    const std::string                              &directory,
+    const unsigned int                              step,
+    const double                                    time,
+    const std::uint64_t                             n_local_nodes,
+    const std::uint64_t                             n_local_cells,
+    const std::function<void(const std::string &)> &write_file,
+    const MPI_Comm                                  communicator)
+  {
+    // All ranks write one file together, under a temporary name that rank
+    // 0 renames once every rank is done.
+    const std::string file = directory + "/" + step_file(name, step) + ".h5";
+    const std::string temporary = file + ".tmp";
+    std::string       problem;
+    try
+      {
+        write_file(temporary);
+      }
+    catch (const std::exception &error)
+      {
+        problem = "Could not write <" + file + ">: " + error.what();
+      }
+    stop_if_any_rank_failed(communicator, problem, "", disk_advice);
+    if (Utilities::MPI::this_mpi_process(communicator) == 0)
+      {
+        std::error_code error;
+        std::filesystem::rename(temporary, file, error);
+        if (error)
+          problem = "Could not write <" + file + ">: " + error.message() + ".";
+      }
+    stop_if_any_rank_failed(communicator, problem, "", disk_advice);
+    format_of_steps = Format::hdf5;
+    steps.push_back({time,
+                     step,
+                     Utilities::MPI::sum(n_local_nodes, communicator),
+                     Utilities::MPI::sum(n_local_cells, communicator)});
+    write_index(directory, Format::hdf5, communicator);
   }
 
 
@@ -197,9 +277,9 @@ namespace MpmOtm
   void
   TimeSeries::save(CheckpointState &state) const
   {
-    // Per step its time, number, nodes and cells; then the patches and the
-    // data sets, each as its number of components, the length of its name
-    // and the name's characters.
+    // Per step its time, number, nodes and cells; then the patches, the
+    // format (1: hdf5) and the data sets, each as its number of components, the
+    // length of its name and the name's characters.
     std::vector<double> numbers;
     for (const Step &s : steps)
       numbers.insert(
@@ -208,7 +288,8 @@ namespace MpmOtm
     state.set_shared("output/" + name + " steps", numbers);
     std::vector<double> layout = {double(patch_dimension),
                                   double(space_dimension),
-                                  double(reference_cell.n_vertices())};
+                                  double(reference_cell.n_vertices()),
+                                  double(format_of_steps == Format::hdf5)};
     for (const auto &[set_name, n_components] : data_sets)
       {
         layout.push_back(n_components);
@@ -221,7 +302,7 @@ namespace MpmOtm
 
 
   void
-  TimeSeries::load(const CheckpointState &state)
+  TimeSeries::load(const CheckpointState &state, const Format format)
   {
     const auto &numbers = state.shared("output/" + name + " steps");
     steps.clear();
@@ -231,15 +312,18 @@ namespace MpmOtm
                        static_cast<std::uint64_t>(numbers[k + 2]),
                        static_cast<std::uint64_t>(numbers[k + 3])});
     const auto &layout = state.shared("output/" + name + " layout");
-    AssertThrow(layout.size() >= 3,
+    AssertThrow(layout.size() >= 4,
                 ExcMessage("The checkpoint lacks the layout of the " + name +
                            " output."));
     patch_dimension = static_cast<unsigned int>(layout[0]);
     space_dimension = static_cast<unsigned int>(layout[1]);
     reference_cell =
       reference_cell_of(patch_dimension, static_cast<unsigned int>(layout[2]));
+    format_of_steps = layout[3] > 0. ? Format::hdf5 : Format::vtu;
+    if (format_of_steps != format)
+      steps.clear();
     data_sets.clear();
-    for (std::size_t k = 3; k + 1 < layout.size();)
+    for (std::size_t k = 4; k + 1 < layout.size();)
       {
         const auto        n_components = static_cast<unsigned int>(layout[k]);
         const std::size_t length = static_cast<std::size_t>(layout[k + 1]);
@@ -253,52 +337,41 @@ namespace MpmOtm
 
 
 
+#define MPM_OTM_INSTANTIATE_WRITE(patch_dim, spacedim) \
+  template void TimeSeries::write(                     \
+    const DataOutInterface<patch_dim, spacedim> &,     \
+    const std::string &,                               \
+    const Format,                                      \
+    const unsigned int,                                \
+    const double,                                      \
+    const ReferenceCell &,                             \
+    const MPI_Comm);
+  MPM_OTM_INSTANTIATE_WRITE(0, 1)
+  MPM_OTM_INSTANTIATE_WRITE(0, 2)
+  MPM_OTM_INSTANTIATE_WRITE(0, 3)
+  MPM_OTM_INSTANTIATE_WRITE(1, 1)
+  MPM_OTM_INSTANTIATE_WRITE(2, 2)
+  MPM_OTM_INSTANTIATE_WRITE(3, 3)
+#undef MPM_OTM_INSTANTIATE_WRITE
   template void
-  TimeSeries::write(const DataOutInterface<0, 1> &,
+  TimeSeries::write(const ParticlePatches<1> &,
                     const std::string &,
                     const Format,
                     const unsigned int,
                     const double,
-                    const ReferenceCell &,
                     const MPI_Comm);
   template void
-  TimeSeries::write(const DataOutInterface<0, 2> &,
+  TimeSeries::write(const ParticlePatches<2> &,
                     const std::string &,
                     const Format,
                     const unsigned int,
                     const double,
-                    const ReferenceCell &,
                     const MPI_Comm);
   template void
-  TimeSeries::write(const DataOutInterface<0, 3> &,
+  TimeSeries::write(const ParticlePatches<3> &,
                     const std::string &,
                     const Format,
                     const unsigned int,
                     const double,
-                    const ReferenceCell &,
-                    const MPI_Comm);
-  template void
-  TimeSeries::write(const DataOutInterface<1, 1> &,
-                    const std::string &,
-                    const Format,
-                    const unsigned int,
-                    const double,
-                    const ReferenceCell &,
-                    const MPI_Comm);
-  template void
-  TimeSeries::write(const DataOutInterface<2, 2> &,
-                    const std::string &,
-                    const Format,
-                    const unsigned int,
-                    const double,
-                    const ReferenceCell &,
-                    const MPI_Comm);
-  template void
-  TimeSeries::write(const DataOutInterface<3, 3> &,
-                    const std::string &,
-                    const Format,
-                    const unsigned int,
-                    const double,
-                    const ReferenceCell &,
                     const MPI_Comm);
 } // namespace MpmOtm

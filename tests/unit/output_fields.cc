@@ -4,10 +4,6 @@
 // material; the grid's nodal_mass and nodal_velocity as a vector. Vectors
 // and tensors are written with 3 and 9 components in 2D (VTU pads them).
 
-#include <deal.II/base/parameter_handler.h>
-
-#include <mpm_otm/base/subsection_names.h>
-
 #include <fstream>
 #include <iterator>
 
@@ -76,16 +72,7 @@ main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   initlog();
-  {
-    ParameterHandler prm;
-    Simulator<2>::declare_parameters(prm, SubsectionNames::read(parameters));
-    prm.parse_input_from_string(parameters);
-    static std::ostringstream quiet;
-    Simulator<2>              simulator(MPI_COMM_WORLD, quiet);
-    simulator.parse_parameters(prm);
-    simulator.setup(prm, false);
-    simulator.run();
-  }
+  simulator_from_text<2>(parameters)->run();
   const std::string particles = read("particles_00001.0.vtu");
   expect_field("particles", particles, "displacement", 3);
   expect_field("particles", particles, "velocity", 3);

@@ -20,7 +20,7 @@ namespace MpmOtm
    * The largest time step for which the explicit update of the actual
    * discretisation is stable: dt_stable = 2 / omega_max, omega_max^2 the
    * largest eigenvalue of M^-1 K, with M the mass matrix the run uses
-   * (lumped, consistent or partially lumped, with its excluded functions)
+   * (lumped, consistent or partially lumped, with its constraints)
    * and K = sum_p V_p B_p^T C_p B_p the stiffness of the material points
    * with each point's elastic moduli (lambda, mu: the initial tangent of
    * every model, an upper bound for plastic ones), both at the initial

@@ -63,17 +63,6 @@ namespace MpmOtm
                      const std::vector<unsigned int> &prescribed,
                      const std::vector<double>       &values) const;
 
-    /**
-     * @p product = M @p vector, with the identity on the coefficients
-     * @p excluded (which are zero in @p vector).
-     */
-    void
-    multiply(const NodalSystem<dim>          &system,
-             const ParticleShapeData<dim>    &shape_data,
-             const VectorType                &vector,
-             VectorType                      &product,
-             const std::vector<unsigned int> &excluded) const;
-
   private:
     /**
      * Sum the entries of the matrix from the points, rebuilding its pattern

@@ -84,9 +84,9 @@ namespace MpmOtm
     save(CheckpointState &state) const;
 
     /**
-     * Restore the time series from @p state and write their .pvd files
-     * again, so that they list the steps up to the checkpoint's only.
-     * Collective.
+     * Restore the time series from @p state and write their indices (.pvd
+     * or .xdmf) again, so that they list the steps up to the checkpoint's
+     * only. Collective.
      */
     void
     load(const CheckpointState &state);

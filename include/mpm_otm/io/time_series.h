@@ -7,6 +7,7 @@
 #include <mpm_otm/base/checkpoint_state.h>
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -20,17 +21,22 @@ namespace MpmOtm
 {
   using namespace dealii;
 
+  template <int dim>
+  class ParticlePatches;
+
   /**
    * One time series of field output - the material points or the grid -
    * in the format Output/Format chooses, both of which ParaView opens:
    * - vtu: per step one piece NAME_NNNNN.R.vtu per rank and the index
    *   NAME_NNNNN.pvtu, and over the steps NAME.pvd;
    * - hdf5: per step one file NAME_NNNNN.h5 that all ranks write together
-   *   (deal.II's DataOutBase::write_hdf5_parallel), and over the steps
+   *   (the grid through deal.II's DataOutBase::write_hdf5_parallel, the
+   *   points through ParticlePatches::write_hdf5()), and over the steps
    *   NAME.xdmf, which points into them.
    * Every file is written under a temporary name and renamed when complete,
    * so an interrupted run leaves the steps written before it intact; a
-   * failed write stops all ranks, naming the file.
+   * failed write stops all ranks, naming the file (a collective HDF5 write
+   * that fails on one rank only may leave the others waiting in HDF5).
    */
   class TimeSeries
   {
@@ -65,6 +71,20 @@ namespace MpmOtm
           const MPI_Comm                               communicator);
 
     /**
+     * Write step @p step at @p time of the material points @p points to
+     * @p directory and add it to the index; in HDF5 the points write their
+     * data themselves (ParticlePatches::write_hdf5()). Collective.
+     */
+    template <int dim>
+    void
+    write(const ParticlePatches<dim> &points,
+          const std::string          &directory,
+          const Format                format,
+          const unsigned int          step,
+          const double                time,
+          const MPI_Comm              communicator);
+
+    /**
      * Save the steps written so far into @p state, for a checkpoint.
      */
     void
@@ -72,10 +92,11 @@ namespace MpmOtm
 
     /**
      * Restore what save() saved: a run resumed at a checkpoint continues
-     * the series it was written with.
+     * the series it was written with, if it writes @p format; with another
+     * format it starts a new series.
      */
     void
-    load(const CheckpointState &state);
+    load(const CheckpointState &state, const Format format);
 
     /**
      * Write the index of @p format over the steps written so far to
@@ -100,6 +121,21 @@ namespace MpmOtm
     };
 
     /**
+     * Write step @p step at @p time to one HDF5 file, which
+     * @p write_file(file name) writes on all ranks together (each with
+     * @p n_local_nodes and @p n_local_cells), under a temporary name renamed
+     * when complete; then add the step to the index. Collective.
+     */
+    void
+    write_hdf5_step(const std::string  &directory,
+                    const unsigned int  step,
+                    const double        time,
+                    const std::uint64_t n_local_nodes,
+                    const std::uint64_t n_local_cells,
+                    const std::function<void(const std::string &)> &write_file,
+                    const MPI_Comm communicator);
+
+    /**
      * Write the index of @p format over #steps to @p directory; the
      * problem, or an empty string.
      */
@@ -115,6 +151,8 @@ namespace MpmOtm
     unsigned int  space_dimension = 0;
     ReferenceCell reference_cell  = ReferenceCells::Vertex;
     std::vector<std::pair<std::string, unsigned int>> data_sets;
+    /// The format of #steps.
+    Format format_of_steps = Format::vtu;
   };
 } // namespace MpmOtm
 

@@ -1,0 +1,89 @@
+#ifndef mpm_otm_io_particle_patches_h
+#define mpm_otm_io_particle_patches_h
+
+#include <deal.II/base/data_out_base.h>
+#include <deal.II/base/mpi.h>
+
+#include <string>
+#include <tuple>
+#include <utility>
+#include <vector>
+
+namespace MpmOtm
+{
+  using namespace dealii;
+
+  template <int dim>
+  class MaterialLibrary;
+  template <int dim>
+  class MaterialPoints;
+
+  /**
+   * The material points of this rank as zero-dimensional patches for
+   * ParaView, with displacement and velocity (vectors), the stress (a
+   * tensor; in 2D and 1D also the stress out of the plane or line), the
+   * mean stress tr(sigma)/3 and the von Mises stress sqrt(3 J2) of the
+   * three-dimensional stress, det F, volume, mass, material, equivalent
+   * plastic strain, the materials' internal variables and the id. With
+   * @p stress_as_components the stress is written as its independent
+   * components stress_xx, stress_xy, ... instead of a tensor, which HDF5
+   * output needs (deal.II 9.4's XDMF index knows scalars and vectors).
+   * The values are kept in one array, point by point, in double precision;
+   * the patches (single precision, one allocation per point) are built
+   * only for the VTU writer.
+   */
+  template <int dim>
+  class ParticlePatches : public DataOutInterface<0, dim>
+  {
+  public:
+    ParticlePatches(const MaterialPoints<dim>  &material_points,
+                    const MaterialLibrary<dim> &materials,
+                    const bool                  stress_as_components);
+
+    /**
+     * Write the points of all ranks into one HDF5 file @p file_name, as
+     * deal.II's write_hdf5_parallel lays it out for an XDMF index (datasets
+     * nodes, cells and one per data set, vectors with three components),
+     * but directly, in double precision: each rank writes its rows of every
+     * dataset. Collective.
+     */
+    void
+    write_hdf5(const std::string &file_name, const MPI_Comm communicator) const;
+
+    /**
+     * The number of points of this rank.
+     */
+    unsigned int
+    n_points() const;
+
+    /**
+     * The data sets of write_hdf5() with their numbers of components.
+     */
+    std::vector<std::pair<std::string, unsigned int>>
+    data_sets() const;
+
+  private:
+    const std::vector<DataOutBase::Patch<0, dim>> &
+    get_patches() const override;
+
+    std::vector<std::string>
+    get_dataset_names() const override;
+
+    std::vector<
+      std::tuple<unsigned int,
+                 unsigned int,
+                 std::string,
+                 DataComponentInterpretation::DataComponentInterpretation>>
+    get_nonscalar_data_ranges() const override;
+
+    const bool               stress_as_components;
+    std::vector<std::string> names;
+    /// The points' locations and, point by point, the values of all names.
+    std::vector<Point<dim>> locations;
+    std::vector<double>     values;
+    /// The patches, built from those when a DataOutInterface writer asks.
+    mutable std::vector<DataOutBase::Patch<0, dim>> patches;
+  };
+} // namespace MpmOtm
+
+#endif
