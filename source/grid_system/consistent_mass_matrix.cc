@@ -541,15 +541,11 @@ namespace MpmOtm
     VectorType                      &solution,
     const AffineConstraints<double> &constraints) const
   {
-    std::vector<unsigned int> prescribed;
-    std::vector<double>       values;
-    system.local_lines(constraints, prescribed, values);
     solve_prescribed(system,
                      shape_data,
                      right_hand_side,
                      solution,
-                     prescribed,
-                     values);
+                     system.local_lines(constraints));
   }
 
 
@@ -557,23 +553,31 @@ namespace MpmOtm
   template <int dim>
   void
   ConsistentMassMatrix<dim>::solve_prescribed(
-    const NodalSystem<dim>          &system,
-    const ParticleShapeData<dim>    &shape_data,
-    const VectorType                &right_hand_side,
-    VectorType                      &solution,
-    const std::vector<unsigned int> &prescribed,
-    const std::vector<double>       &values) const
+    const NodalSystem<dim>                             &system,
+    const ParticleShapeData<dim>                       &shape_data,
+    const VectorType                                   &right_hand_side,
+    VectorType                                         &solution,
+    const std::vector<std::pair<unsigned int, double>> &lines) const
   {
+    // The prescribed indices, which the operators keep at the identity.
+    std::vector<unsigned int> prescribed(lines.size());
+    for (unsigned int k = 0; k < lines.size(); ++k)
+      prescribed[k] = lines[k].first;
+    const auto set_values = [&](VectorType &vector) {
+      for (const auto &[i, value] : lines)
+        vector.local_element(i) = value;
+    };
+
     VectorType rhs(right_hand_side);
     rhs.zero_out_ghost_values();
 
     // b_f - M_fp x_p; the vector x_p is communicated, so every rank takes
     // part even without prescribed values of its own.
     const bool inhomogeneous =
-      Utilities::MPI::max(std::any_of(values.begin(),
-                                      values.end(),
-                                      [](const double b) {
-                                        return b != 0.;
+      Utilities::MPI::max(std::any_of(lines.begin(),
+                                      lines.end(),
+                                      [](const auto &line) {
+                                        return line.second != 0.;
                                       }) ?
                             1 :
                             0,
@@ -583,22 +587,17 @@ namespace MpmOtm
         VectorType lifted, product;
         lifted.reinit(right_hand_side);
         product.reinit(right_hand_side, true);
-        for (unsigned int k = 0; k < prescribed.size(); ++k)
-          lifted.local_element(prescribed[k]) = values[k];
+        set_values(lifted);
         ConsistentMassMatrix<dim>::vmult(system, shape_data, lifted, product);
         rhs -= product;
       }
     for (const unsigned int i : prescribed)
       rhs.local_element(i) = 0.;
-    const double norm           = rhs.l2_norm();
-    const auto   set_prescribed = [&]() {
-      for (unsigned int k = 0; k < prescribed.size(); ++k)
-        solution.local_element(prescribed[k]) = values[k];
-    };
+    const double norm = rhs.l2_norm();
     if (norm == 0.)
       {
         solution = 0.;
-        set_prescribed();
+        set_values(solution);
         return;
       }
 
@@ -650,7 +649,7 @@ namespace MpmOtm
                    "lumped', or a smaller 'Max-ent support factor'.";
         AssertThrow(false, ExcMessage(message.str()));
       }
-    set_prescribed();
+    set_values(solution);
   }
 
 

@@ -297,10 +297,9 @@ namespace MpmOtm
 
 
   template <int dim>
-  void
-  NodalSystem<dim>::local_lines(const AffineConstraints<double> &constraints,
-                                std::vector<unsigned int>       &indices,
-                                std::vector<double>             &values) const
+  std::vector<std::pair<unsigned int, double>>
+  NodalSystem<dim>::local_lines(
+    const AffineConstraints<double> &constraints) const
   {
     std::vector<std::pair<unsigned int, double>> lines;
     for (const auto &line : constraints.get_lines())
@@ -311,13 +310,7 @@ namespace MpmOtm
                            line.inhomogeneity);
       }
     std::sort(lines.begin(), lines.end());
-    indices.resize(lines.size());
-    values.resize(lines.size());
-    for (unsigned int k = 0; k < lines.size(); ++k)
-      {
-        indices[k] = lines[k].first;
-        values[k]  = lines[k].second;
-      }
+    return lines;
   }
 
 

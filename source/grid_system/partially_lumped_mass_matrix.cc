@@ -2,7 +2,7 @@
 #include <mpm_otm/grid_system/partially_lumped_mass_matrix.h>
 
 #include <algorithm>
-#include <tuple>
+#include <utility>
 
 namespace MpmOtm
 {
@@ -50,29 +50,25 @@ namespace MpmOtm
     // a_B = f_B / m_B on the lumped rows (the edge functions that are not
     // constrained), then M_II a_I = f_I - M_IB a_B on the others: a solve
     // with the lumped rows prescribed like the constrained ones.
-    std::vector<unsigned int> constrained;
-    std::vector<double>       constrained_values;
-    system.local_lines(constraints, constrained, constrained_values);
-    std::vector<std::pair<unsigned int, double>> prescribed;
-    for (unsigned int k = 0; k < constrained.size(); ++k)
-      prescribed.emplace_back(constrained[k], constrained_values[k]);
+    std::vector<std::pair<unsigned int, double>> prescribed =
+      system.local_lines(constraints);
+    const auto n_constrained = prescribed.size();
     for (const unsigned int i : system.material_boundary_functions())
-      if (!std::binary_search(constrained.begin(), constrained.end(), i))
+      if (!std::binary_search(prescribed.begin(),
+                              prescribed.begin() + n_constrained,
+                              std::make_pair(i, 0.),
+                              [](const auto &a, const auto &b) {
+                                return a.first < b.first;
+                              }))
         prescribed.emplace_back(i,
                                 right_hand_side.local_element(i) /
                                   system.lumped_mass.local_element(i));
     std::sort(prescribed.begin(), prescribed.end());
-
-    std::vector<unsigned int> indices(prescribed.size());
-    std::vector<double>       values(prescribed.size());
-    for (unsigned int k = 0; k < prescribed.size(); ++k)
-      std::tie(indices[k], values[k]) = prescribed[k];
     this->solve_prescribed(system,
                            shape_data,
                            right_hand_side,
                            solution,
-                           indices,
-                           values);
+                           prescribed);
   }
 
 

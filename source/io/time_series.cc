@@ -353,25 +353,15 @@ namespace MpmOtm
   MPM_OTM_INSTANTIATE_WRITE(2, 2)
   MPM_OTM_INSTANTIATE_WRITE(3, 3)
 #undef MPM_OTM_INSTANTIATE_WRITE
-  template void
-  TimeSeries::write(const ParticlePatches<1> &,
-                    const std::string &,
-                    const Format,
-                    const unsigned int,
-                    const double,
-                    const MPI_Comm);
-  template void
-  TimeSeries::write(const ParticlePatches<2> &,
-                    const std::string &,
-                    const Format,
-                    const unsigned int,
-                    const double,
-                    const MPI_Comm);
-  template void
-  TimeSeries::write(const ParticlePatches<3> &,
-                    const std::string &,
-                    const Format,
-                    const unsigned int,
-                    const double,
-                    const MPI_Comm);
+#define MPM_OTM_INSTANTIATE_WRITE_POINTS(dim)                   \
+  template void TimeSeries::write(const ParticlePatches<dim> &, \
+                                  const std::string &,          \
+                                  const Format,                 \
+                                  const unsigned int,           \
+                                  const double,                 \
+                                  const MPI_Comm);
+  MPM_OTM_INSTANTIATE_WRITE_POINTS(1)
+  MPM_OTM_INSTANTIATE_WRITE_POINTS(2)
+  MPM_OTM_INSTANTIATE_WRITE_POINTS(3)
+#undef MPM_OTM_INSTANTIATE_WRITE_POINTS
 } // namespace MpmOtm

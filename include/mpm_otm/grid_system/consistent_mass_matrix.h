@@ -50,18 +50,19 @@ namespace MpmOtm
 
   protected:
     /**
-     * Solve M @p solution = @p right_hand_side with the coefficients
-     * @p prescribed (sorted local indices) set to @p values: the other rows
+     * Solve M @p solution = @p right_hand_side with the coefficients of
+     * @p prescribed (pairs of a local index and its value, sorted by index)
+     * set to their values: the other rows
      * solve M_ff x_f = b_f - M_fp x_p by CG; stops the run if CG does not
      * converge.
      */
     void
-    solve_prescribed(const NodalSystem<dim>          &system,
-                     const ParticleShapeData<dim>    &shape_data,
-                     const VectorType                &right_hand_side,
-                     VectorType                      &solution,
-                     const std::vector<unsigned int> &prescribed,
-                     const std::vector<double>       &values) const;
+    solve_prescribed(
+      const NodalSystem<dim>                             &system,
+      const ParticleShapeData<dim>                       &shape_data,
+      const VectorType                                   &right_hand_side,
+      VectorType                                         &solution,
+      const std::vector<std::pair<unsigned int, double>> &prescribed) const;
 
   private:
     /**

@@ -11,6 +11,7 @@
 
 #include <array>
 #include <memory>
+#include <utility>
 #include <vector>
 
 namespace MpmOtm
@@ -114,14 +115,12 @@ namespace MpmOtm
     constraints() const;
 
     /**
-     * The lines of @p constraints as local indices (sorted) and their
-     * inhomogeneities. Only lines x_i = b_i, without entries, are
-     * supported.
+     * The lines of @p constraints as pairs of a local index and its
+     * inhomogeneity, sorted by index. Only lines x_i = b_i, without entries,
+     * are supported.
      */
-    void
-    local_lines(const AffineConstraints<double> &constraints,
-                std::vector<unsigned int>       &indices,
-                std::vector<double>             &values) const;
+    std::vector<std::pair<unsigned int, double>>
+    local_lines(const AffineConstraints<double> &constraints) const;
 
     /**
      * Locally owned functions (local indices, sorted) deactivated in this
