@@ -9,11 +9,13 @@
 # format the seconds per output (TimerOutput section "output", divided by
 # the 3 outputs) and that as a fraction of 100 steps.
 # Usage: scripts/benchmark_output.sh [path to mpm-otm] [NP] [cells "NX, NY"]
+#        [formats, default "vtu hdf5"]
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 exe=$(realpath "${1:-$root/build-release/mpm-otm}")
 np=${2:-1}
 cells=${3:-1000, 250}
+formats=${4:-vtu hdf5}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cd "$work"
@@ -31,7 +33,7 @@ run() {
 echo "| format | ranks | 100 steps (s) | one output (s) | output / 100 steps |"
 echo "|---|---|---|---|---|"
 read -r steps _ < <(run none)
-for format in vtu hdf5; do
+for format in $formats; do
   read -r _ output < <(run "$format")
   awk -v f="$format" -v np="$np" -v s="$steps" -v o="$output" \
     'BEGIN { printf "| %s | %d | %.2f | %.2f | %.1f %% |\n", f, np, s / 2, o / 3, 100 * (o / 3) / (s / 2) }'

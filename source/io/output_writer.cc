@@ -1,10 +1,10 @@
 #include <deal.II/base/data_out_base.h>
 #include <deal.II/base/utilities.h>
-#include <deal.II/numerics/data_out.h>
 
 #include <mpm_otm/base/collective_error.h>
 #include <mpm_otm/grid/background_grid.h>
 #include <mpm_otm/grid_system/nodal_system.h>
+#include <mpm_otm/io/grid_patches.h>
 #include <mpm_otm/io/output_directory.h>
 #include <mpm_otm/io/output_writer.h>
 #include <mpm_otm/io/particle_patches.h>
@@ -24,34 +24,6 @@ namespace MpmOtm
 {
   namespace
   {
-    /**
-     * DataOut of the grid fields that writes the nodal velocity - separate
-     * coefficient vectors of the family's scalar DoFHandler, data
-     * components 1 to dim after the nodal mass - as one vector, so that
-     * ParaView draws it with glyphs and stream lines.
-     */
-    template <int dim>
-    class GridDataOut : public DataOut<dim>
-    {
-    public:
-      std::vector<
-        std::tuple<unsigned int,
-                   unsigned int,
-                   std::string,
-                   DataComponentInterpretation::DataComponentInterpretation>>
-      get_nonscalar_data_ranges() const override
-      {
-        auto ranges = DataOut<dim>::get_nonscalar_data_ranges();
-        if (dim > 1)
-          ranges.emplace_back(
-            1,
-            dim,
-            "nodal_velocity",
-            DataComponentInterpretation::component_is_part_of_vector);
-        return ranges;
-      }
-    };
-
     std::string
     step_string(const unsigned int step)
     {
@@ -323,34 +295,11 @@ namespace MpmOtm
     const ShapeFunctions<dim> &shape_functions,
     NodalSystem<dim>          &system)
   {
-    // The coefficient fields sum_i c_i phi_i, written in the element the
-    // cells carry (for B-splines: their Bernstein form on every cell).
-    GridDataOut<dim> data_out;
-    data_out.attach_dof_handler(shape_functions.dof_handler());
-    std::array<typename ShapeFunctions<dim>::VectorType, dim + 1> fields;
-    system.lumped_mass.update_ghost_values();
-    shape_functions.to_cell_dofs(system.lumped_mass, fields[dim]);
-    data_out.add_data_vector(fields[dim], "nodal_mass");
-    const std::string names = "xyz";
-    for (unsigned int c = 0; c < dim; ++c)
-      {
-        system.velocity[c].update_ghost_values();
-        shape_functions.to_cell_dofs(system.velocity[c], fields[c]);
-        data_out.add_data_vector(fields[c],
-                                 std::string("nodal_velocity_") + names[c]);
-      }
-    Vector<float> subdomain(grid.triangulation().n_active_cells());
-    for (auto &value : subdomain)
-      value = grid.triangulation().locally_owned_subdomain();
-    data_out.add_data_vector(subdomain, "subdomain");
-    data_out.build_patches(grid.mapping(),
-                           shape_functions.dof_handler().get_fe().degree);
-    grid_series.write(data_out,
+    grid_series.write(GridPatches<dim>(grid, shape_functions, system),
                       output_directory,
                       field_format,
                       step,
                       time,
-                      grid.triangulation().get_reference_cells()[0],
                       mpi_communicator);
   }
 

@@ -1,5 +1,4 @@
-#include <deal.II/base/hdf5.h>
-
+#include <mpm_otm/io/collective_hdf5_file.h>
 #include <mpm_otm/io/particle_patches.h>
 #include <mpm_otm/material_points/material_points.h>
 #include <mpm_otm/materials/material_library.h>
@@ -159,10 +158,28 @@ namespace MpmOtm
 
 
   template <int dim>
-  unsigned int
-  ParticlePatches<dim>::n_points() const
+  std::uint64_t
+  ParticlePatches<dim>::n_nodes() const
   {
     return locations.size();
+  }
+
+
+
+  template <int dim>
+  std::uint64_t
+  ParticlePatches<dim>::n_cells() const
+  {
+    return locations.size();
+  }
+
+
+
+  template <int dim>
+  ReferenceCell
+  ParticlePatches<dim>::reference_cell() const
+  {
+    return ReferenceCells::Vertex;
   }
 
 
@@ -171,25 +188,7 @@ namespace MpmOtm
   std::vector<std::pair<std::string, unsigned int>>
   ParticlePatches<dim>::data_sets() const
   {
-    // The vectors (padded to three components), then the scalars, in the
-    // order of the data.
-    std::vector<std::pair<std::string, unsigned int>> result;
-    const auto ranges = get_nonscalar_data_ranges();
-    for (unsigned int k = 0; k < names.size();)
-      {
-        const auto range =
-          std::find_if(ranges.begin(), ranges.end(), [&](const auto &r) {
-            return std::get<0>(r) == k;
-          });
-        if (range != ranges.end())
-          {
-            result.emplace_back(std::get<2>(*range), 3);
-            k = std::get<1>(*range) + 1;
-          }
-        else
-          result.emplace_back(names[k++], 1);
-      }
-    return result;
+    return xdmf_data_sets(names, get_nonscalar_data_ranges());
   }
 
 
@@ -199,56 +198,27 @@ namespace MpmOtm
   ParticlePatches<dim>::write_hdf5(const std::string &file_name,
                                    const MPI_Comm     communicator) const
   {
-    // This rank's rows start after those of the ranks before it.
-    const hsize_t              n_local = locations.size();
-    const std::vector<hsize_t> counts =
-      Utilities::MPI::all_gather(communicator, n_local);
-    const unsigned int rank = Utilities::MPI::this_mpi_process(communicator);
-    const hsize_t      first =
-      std::accumulate(counts.begin(), counts.begin() + rank, hsize_t(0));
-    const hsize_t n_total =
-      std::accumulate(counts.begin(), counts.end(), hsize_t(0));
-
-    HDF5::File file(file_name,
-                    HDF5::File::FileAccessMode::create,
-                    communicator);
-    const auto write = [&](const std::string &name,
-                           const auto        &values,
-                           const unsigned int n_columns) {
-      using Number = typename std::decay_t<decltype(values)>::value_type;
-      auto dataset =
-        file.create_dataset<Number>(name, {n_total, hsize_t(n_columns)});
-      if (n_local > 0)
-        dataset.write_hyperslab(values, {first, 0}, {n_local, n_columns});
-      else
-        dataset.template write_none<Number>();
-    };
-
+    CollectiveHDF5File  file(file_name, communicator);
+    const std::size_t   n_local = locations.size();
     std::vector<double> nodes;
     nodes.reserve(n_local * dim);
     for (const Point<dim> &location : locations)
       for (unsigned int d = 0; d < dim; ++d)
         nodes.push_back(location[d]);
-    write("nodes", nodes, dim);
+    const std::uint64_t       first = file.write("nodes", nodes, dim);
     std::vector<unsigned int> cells(n_local);
     for (unsigned int p = 0; p < n_local; ++p)
       cells[p] = first + p;
-    write("cells", cells, 1);
+    file.write("cells", cells, 1);
 
-    unsigned int        component = 0;
-    std::vector<double> column;
-    for (const auto &[name, n_columns] : data_sets())
-      {
-        const unsigned int n_components =
-          n_columns == 1 ? 1 : static_cast<unsigned int>(dim);
-        column.assign(n_local * n_columns, 0.);
-        for (unsigned int p = 0; p < n_local; ++p)
-          for (unsigned int c = 0; c < n_components; ++c)
-            column[p * n_columns + c] =
-              values[p * names.size() + component + c];
-        write(name, column, n_columns);
-        component += n_components;
-      }
+    const std::size_t n_fields = names.size();
+    file.write_fields<double>(data_sets(),
+                              n_local,
+                              dim,
+                              [&](const std::size_t  p,
+                                  const unsigned int component) {
+                                return values[p * n_fields + component];
+                              });
   }
 
 

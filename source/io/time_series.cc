@@ -2,6 +2,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <mpm_otm/base/collective_error.h>
+#include <mpm_otm/io/grid_patches.h>
 #include <mpm_otm/io/output_directory.h>
 #include <mpm_otm/io/particle_patches.h>
 #include <mpm_otm/io/time_series.h>
@@ -53,122 +54,86 @@ namespace MpmOtm
 
 
 
-  template <int patch_dim, int spacedim>
+  template <typename Patches>
   void
-  TimeSeries::write(const DataOutInterface<patch_dim, spacedim> &data,
-                    const std::string                           &directory,
-                    const Format                                 format,
-                    const unsigned int                           step,
-                    const double                                 time,
-                    const ReferenceCell                         &cell,
-                    const MPI_Comm                               communicator)
+  TimeSeries::write(const Patches     &patches,
+                    const std::string &directory,
+                    const Format       format,
+                    const unsigned int step,
+                    const double       time,
+                    const MPI_Comm     communicator)
   {
-    const unsigned int rank    = Utilities::MPI::this_mpi_process(communicator);
-    const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(communicator);
-    const std::string  base    = step_file(name, step);
-    patch_dimension            = patch_dim;
-    space_dimension            = spacedim;
-    reference_cell             = cell;
-    std::string problem;
+    reference_cell = patches.reference_cell();
+    remember_dimensions(patches);
     if (format == Format::vtu)
       {
-        const unsigned int digits = Utilities::needed_digits(n_ranks - 1);
-        const auto         piece  = [&](const unsigned int r) {
-          return base + "." + Utilities::int_to_string(r, digits) + ".vtu";
-        };
-        stop_if_any_rank_failed(
-          communicator,
-          OutputDirectory::write_file_atomically(directory + "/" + piece(rank),
-                                                 [&](std::ostream &out) {
-                                                   data.write_vtu(out);
-                                                 }),
-          "",
-          disk_advice);
-        if (rank == 0)
-          {
-            std::vector<std::string> pieces;
-            for (unsigned int r = 0; r < n_ranks; ++r)
-              pieces.push_back(piece(r));
-            problem = OutputDirectory::write_file_atomically(
-              directory + "/" + base + ".pvtu",
-              [&](std::ostream &out) {
-                data.write_pvtu_record(out, pieces);
-              });
-          }
-      }
-    else
-      {
-        DataOutBase::DataOutFilter filter(
-          DataOutBase::DataOutFilterFlags(false, true));
-        data.write_filtered_data(filter);
-        // A rank without cells has an empty filter (and an invalid count of
-        // cells); the index takes the data sets of the first rank with some.
-        const bool has_cells = filter.n_data_sets() > 0;
-        std::vector<std::pair<std::string, unsigned int>> own_sets;
-        for (unsigned int i = 0; i < filter.n_data_sets(); ++i)
-          own_sets.emplace_back(filter.get_data_set_name(i),
-                                filter.get_data_set_dim(i));
-        data_sets.clear();
-        for (const auto &sets :
-             Utilities::MPI::all_gather(communicator, own_sets))
-          if (data_sets.empty())
-            data_sets = sets;
-        write_hdf5_step(
-          directory,
-          step,
-          time,
-          has_cells ? filter.n_nodes() : 0,
-          has_cells ? filter.n_cells() : 0,
-          [&](const std::string &file_name) {
-            data.write_hdf5_parallel(filter, file_name, communicator);
-          },
-          communicator);
+        write_vtu(patches, directory, step, time, communicator);
         return;
       }
-    stop_if_any_rank_failed(communicator, problem, "", disk_advice);
-    format_of_steps = Format::vtu;
-    steps.push_back({time, step, 0, 0});
-    write_index(directory, format, communicator);
-  }
-
-
-
-  template <int dim>
-  void
-  TimeSeries::write(const ParticlePatches<dim> &points,
-                    const std::string          &directory,
-                    const Format                format,
-                    const unsigned int          step,
-                    const double                time,
-                    const MPI_Comm              communicator)
-  {
-    if (format == Format::vtu)
-      {
-        write(static_cast<const DataOutInterface<0, dim> &>(points),
-              directory,
-              format,
-              step,
-              time,
-              ReferenceCells::Vertex,
-              communicator);
-        return;
-      }
-    // deal.II's DataOutFilter takes most of the time of write_hdf5_parallel
-    // (a map of all points); the patches write their points directly.
-    patch_dimension = 0;
-    space_dimension = dim;
-    reference_cell  = ReferenceCells::Vertex;
-    data_sets       = points.data_sets();
+    data_sets = patches.data_sets();
     write_hdf5_step(
       directory,
       step,
       time,
-      points.n_points(),
-      points.n_points(),
+      patches.n_nodes(),
+      patches.n_cells(),
       [&](const std::string &file_name) {
-        points.write_hdf5(file_name, communicator);
+        patches.write_hdf5(file_name, communicator);
       },
       communicator);
+  }
+
+
+
+  template <int patch_dim, int spacedim>
+  void
+  TimeSeries::remember_dimensions(const DataOutInterface<patch_dim, spacedim> &)
+  {
+    patch_dimension = patch_dim;
+    space_dimension = spacedim;
+  }
+
+
+
+  template <int patch_dim, int spacedim>
+  void
+  TimeSeries::write_vtu(const DataOutInterface<patch_dim, spacedim> &data,
+                        const std::string                           &directory,
+                        const unsigned int                           step,
+                        const double                                 time,
+                        const MPI_Comm communicator)
+  {
+    const unsigned int rank    = Utilities::MPI::this_mpi_process(communicator);
+    const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(communicator);
+    const std::string  base    = step_file(name, step);
+    const unsigned int digits  = Utilities::needed_digits(n_ranks - 1);
+    const auto         piece   = [&](const unsigned int r) {
+      return base + "." + Utilities::int_to_string(r, digits) + ".vtu";
+    };
+    stop_if_any_rank_failed(
+      communicator,
+      OutputDirectory::write_file_atomically(directory + "/" + piece(rank),
+                                             [&](std::ostream &out) {
+                                               data.write_vtu(out);
+                                             }),
+      "",
+      disk_advice);
+    std::string problem;
+    if (rank == 0)
+      {
+        std::vector<std::string> pieces;
+        for (unsigned int r = 0; r < n_ranks; ++r)
+          pieces.push_back(piece(r));
+        problem = OutputDirectory::write_file_atomically(
+          directory + "/" + base + ".pvtu",
+          [&](std::ostream &out) {
+            data.write_pvtu_record(out, pieces);
+          });
+      }
+    stop_if_any_rank_failed(communicator, problem, "", disk_advice);
+    format_of_steps = Format::vtu;
+    steps.push_back({time, step, 0, 0});
+    write_index(directory, Format::vtu, communicator);
   }
 
 
@@ -337,31 +302,21 @@ namespace MpmOtm
 
 
 
-#define MPM_OTM_INSTANTIATE_WRITE(patch_dim, spacedim) \
-  template void TimeSeries::write(                     \
-    const DataOutInterface<patch_dim, spacedim> &,     \
-    const std::string &,                               \
-    const Format,                                      \
-    const unsigned int,                                \
-    const double,                                      \
-    const ReferenceCell &,                             \
-    const MPI_Comm);
-  MPM_OTM_INSTANTIATE_WRITE(0, 1)
-  MPM_OTM_INSTANTIATE_WRITE(0, 2)
-  MPM_OTM_INSTANTIATE_WRITE(0, 3)
-  MPM_OTM_INSTANTIATE_WRITE(1, 1)
-  MPM_OTM_INSTANTIATE_WRITE(2, 2)
-  MPM_OTM_INSTANTIATE_WRITE(3, 3)
-#undef MPM_OTM_INSTANTIATE_WRITE
-#define MPM_OTM_INSTANTIATE_WRITE_POINTS(dim)                   \
+#define MPM_OTM_INSTANTIATE_WRITE(dim)                          \
   template void TimeSeries::write(const ParticlePatches<dim> &, \
                                   const std::string &,          \
                                   const Format,                 \
                                   const unsigned int,           \
                                   const double,                 \
+                                  const MPI_Comm);              \
+  template void TimeSeries::write(const GridPatches<dim> &,     \
+                                  const std::string &,          \
+                                  const Format,                 \
+                                  const unsigned int,           \
+                                  const double,                 \
                                   const MPI_Comm);
-  MPM_OTM_INSTANTIATE_WRITE_POINTS(1)
-  MPM_OTM_INSTANTIATE_WRITE_POINTS(2)
-  MPM_OTM_INSTANTIATE_WRITE_POINTS(3)
-#undef MPM_OTM_INSTANTIATE_WRITE_POINTS
+  MPM_OTM_INSTANTIATE_WRITE(1)
+  MPM_OTM_INSTANTIATE_WRITE(2)
+  MPM_OTM_INSTANTIATE_WRITE(3)
+#undef MPM_OTM_INSTANTIATE_WRITE
 } // namespace MpmOtm

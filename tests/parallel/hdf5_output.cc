@@ -12,6 +12,14 @@
 // particles.xdmf and grid.xdmf index steps 0 to 4; the grid's nodal_velocity is
 // a vector.
 //
+// The grid (grid_00004.h5, written patch by patch, GridPatches::write_hdf5):
+// with linear functions 16 quadrilaterals of 4 own nodes each (64 nodes),
+// with quadratic B-splines (their Bernstein form, each cell a patch of 3 x 3
+// nodes subdivided twice) 64 quadrilaterals on 144 nodes; every
+// cell's corners counter-clockwise with the area of a cell (shoelace
+// formula), and the nodal velocity (1, 0, 0) at every node (every function
+// carries mass, and the functions sum to one).
+//
 // The run writes a checkpoint at step 2 and is then resumed from it: the
 // resumed run must continue the series it was written with, so the index
 // again lists steps 0 to 4, each once.
@@ -102,6 +110,51 @@ check_index(const std::string &when)
           << std::endl;
 }
 
+/**
+ * Check grid_00004.h5 of the run with @p family: @p n_cells counter-clockwise
+ * quadrilaterals of area 1 / n_cells on @p n_nodes nodes, and the velocity
+ * (1, 0, 0) at every node.
+ */
+void
+check_grid(const std::string &family,
+           const unsigned int n_cells,
+           const unsigned int n_nodes)
+{
+  HDF5::File file("output-hdf5/grid_00004.h5",
+                  HDF5::File::FileAccessMode::open);
+  const auto nodes = file.open_dataset("nodes").read<std::vector<double>>();
+  const auto cells =
+    file.open_dataset("cells").read<std::vector<unsigned int>>();
+  const auto velocity =
+    file.open_dataset("nodal_velocity").read<std::vector<float>>();
+  check(cells.size() == 4 * n_cells && nodes.size() == 2 * n_nodes &&
+          velocity.size() == 3 * n_nodes,
+        family + ": grid_00004.h5 must hold " + std::to_string(n_cells) +
+          " quadrilaterals on " + std::to_string(n_nodes) + " nodes");
+  for (unsigned int c = 0; c < n_cells; ++c)
+    {
+      double area = 0;
+      for (unsigned int v = 0; v < 4; ++v)
+        {
+          const unsigned int i = cells[4 * c + v],
+                             j = cells[4 * c + (v + 1) % 4];
+          area += 0.5 * (nodes[2 * i] * nodes[2 * j + 1] -
+                         nodes[2 * j] * nodes[2 * i + 1]);
+        }
+      check(std::abs(area * n_cells - 1.) < 1e-12,
+            family + ": grid cell " + std::to_string(c) + " has area " +
+              std::to_string(area) + " or is not counter-clockwise");
+    }
+  for (unsigned int i = 0; i < nodes.size() / 2; ++i)
+    check(std::abs(velocity[3 * i] - 1.f) < 1e-6f &&
+            std::abs(velocity[3 * i + 1]) < 1e-6f && velocity[3 * i + 2] == 0.f,
+          family + ": the nodal velocity at grid node " + std::to_string(i) +
+            " is not (1, 0, 0)");
+  deallog << family << ": grid_00004.h5 holds " << n_cells
+          << " counter-clockwise cells of area 1/" << n_cells << " on "
+          << n_nodes << " nodes, nodal velocity (1, 0, 0)" << std::endl;
+}
+
 int
 main(int argc, char **argv)
 {
@@ -141,9 +194,16 @@ main(int argc, char **argv)
                 "; must be (4 dt, 0) without stress");
       deallog << "particles_00004.h5: 64 points, total mass " << total_mass
               << ", displacement (4 dt, 0, 0), no stress" << std::endl;
+      check_grid("linear", 16, 64);
     }
 
   simulator_from_text<2>(parameters, MPI_COMM_WORLD, true)->run();
   if (root)
     check_index("resumed from step 2");
+
+  simulator_from_text<2>(parameters + "set Shape functions = B-spline\n"
+                                      "set B-spline degree = 2\n")
+    ->run();
+  if (root)
+    check_grid("quadratic B-splines", 64, 144);
 }

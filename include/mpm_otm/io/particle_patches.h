@@ -3,7 +3,9 @@
 
 #include <deal.II/base/data_out_base.h>
 #include <deal.II/base/mpi.h>
+#include <deal.II/grid/reference_cell.h>
 
+#include <cstdint>
 #include <string>
 #include <tuple>
 #include <utility>
@@ -53,8 +55,20 @@ namespace MpmOtm
     /**
      * The number of points of this rank.
      */
-    unsigned int
-    n_points() const;
+    std::uint64_t
+    n_nodes() const;
+
+    /**
+     * The number of cells of this rank in write_hdf5(): each point is one.
+     */
+    std::uint64_t
+    n_cells() const;
+
+    /**
+     * The kind of cell of the patches: a vertex.
+     */
+    ReferenceCell
+    reference_cell() const;
 
     /**
      * The data sets of write_hdf5() with their numbers of components.

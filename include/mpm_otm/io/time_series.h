@@ -21,18 +21,14 @@ namespace MpmOtm
 {
   using namespace dealii;
 
-  template <int dim>
-  class ParticlePatches;
-
   /**
    * One time series of field output - the material points or the grid -
    * in the format Output/Format chooses, both of which ParaView opens:
    * - vtu: per step one piece NAME_NNNNN.R.vtu per rank and the index
    *   NAME_NNNNN.pvtu, and over the steps NAME.pvd;
    * - hdf5: per step one file NAME_NNNNN.h5 that all ranks write together
-   *   (the grid through deal.II's DataOutBase::write_hdf5_parallel, the
-   *   points through ParticlePatches::write_hdf5()), and over the steps
-   *   NAME.xdmf, which points into them.
+   *   (ParticlePatches::write_hdf5(), GridPatches::write_hdf5()), and over
+   *   the steps NAME.xdmf, which points into them.
    * Every file is written under a temporary name and renamed when complete,
    * so an interrupted run leaves the steps written before it intact; a
    * failed write stops all ranks, naming the file (a collective HDF5 write
@@ -56,33 +52,18 @@ namespace MpmOtm
     explicit TimeSeries(const std::string &name);
 
     /**
-     * Write step @p step at @p time of @p data, whose patches are of the
-     * kind @p reference_cell, to @p directory and add it to the index.
-     * Collective.
+     * Write step @p step at @p time of @p patches (ParticlePatches or
+     * GridPatches) to @p directory and add it to the index: in VTU through
+     * their DataOutInterface, in HDF5 by their own write_hdf5(). Collective.
      */
-    template <int patch_dim, int spacedim>
+    template <typename Patches>
     void
-    write(const DataOutInterface<patch_dim, spacedim> &data,
-          const std::string                           &directory,
-          const Format                                 format,
-          const unsigned int                           step,
-          const double                                 time,
-          const ReferenceCell                         &reference_cell,
-          const MPI_Comm                               communicator);
-
-    /**
-     * Write step @p step at @p time of the material points @p points to
-     * @p directory and add it to the index; in HDF5 the points write their
-     * data themselves (ParticlePatches::write_hdf5()). Collective.
-     */
-    template <int dim>
-    void
-    write(const ParticlePatches<dim> &points,
-          const std::string          &directory,
-          const Format                format,
-          const unsigned int          step,
-          const double                time,
-          const MPI_Comm              communicator);
+    write(const Patches     &patches,
+          const std::string &directory,
+          const Format       format,
+          const unsigned int step,
+          const double       time,
+          const MPI_Comm     communicator);
 
     /**
      * Save the steps written so far into @p state, for a checkpoint.
@@ -108,6 +89,25 @@ namespace MpmOtm
                 const MPI_Comm     communicator) const;
 
   private:
+    /**
+     * Set #patch_dimension and #space_dimension to those of @p data.
+     */
+    template <int patch_dim, int spacedim>
+    void
+    remember_dimensions(const DataOutInterface<patch_dim, spacedim> &data);
+
+    /**
+     * Write step @p step of @p data as VTU pieces, one per rank, with their
+     * .pvtu record, and add it to the index. Collective.
+     */
+    template <int patch_dim, int spacedim>
+    void
+    write_vtu(const DataOutInterface<patch_dim, spacedim> &data,
+              const std::string                           &directory,
+              const unsigned int                           step,
+              const double                                 time,
+              const MPI_Comm                               communicator);
+
     /**
      * One written step; the counts of the whole mesh (summed over the
      * ranks) go into the XDMF index.
