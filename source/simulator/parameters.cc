@@ -218,6 +218,7 @@ namespace MpmOtm
       }
     else
       nodal_update = PluginRegistry<NodalUpdate<dim>>::create(update_scheme);
+    nodal_update->parse_parameters(prm);
     if (method == "MPM")
       grid_motion = std::make_unique<FixedGrid<dim>>();
     else if (auto *splines =
@@ -239,6 +240,7 @@ namespace MpmOtm
       grid_motion = std::make_unique<AdvectedGrid<dim>>();
     mass_matrix =
       PluginRegistry<MassMatrix<dim>>::create(prm.get("Mass matrix"));
+    mass_matrix->parse_parameters(prm);
     deactivation_threshold = prm.get_double("Deactivation threshold");
 
     prm.enter_subsection("Time");

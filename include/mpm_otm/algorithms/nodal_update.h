@@ -41,6 +41,14 @@ namespace MpmOtm
     virtual ~NodalUpdate() = default;
 
     /**
+     * Read the update's own parameters (declared by the plugin's static
+     * declare_parameters()).
+     */
+    virtual void
+    parse_parameters(ParameterHandler &)
+    {}
+
+    /**
      * Fill system.velocity (locally owned entries) for the step @p dt;
      * @p previous_dt is the length of the step before (equal to @p dt in the
      * first step, where OTM sets x_p^{-1} = x_p^0 - dt v_p^0).

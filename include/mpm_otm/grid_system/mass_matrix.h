@@ -1,6 +1,8 @@
 #ifndef mpm_otm_grid_system_mass_matrix_h
 #define mpm_otm_grid_system_mass_matrix_h
 
+#include <deal.II/base/parameter_handler.h>
+
 #include <mpm_otm/grid_system/nodal_system.h>
 
 namespace MpmOtm
@@ -20,6 +22,14 @@ namespace MpmOtm
     using VectorType = typename NodalSystem<dim>::VectorType;
 
     virtual ~MassMatrix() = default;
+
+    /**
+     * Read the treatment's own parameters (declared by the plugin's static
+     * declare_parameters()).
+     */
+    virtual void
+    parse_parameters(ParameterHandler &)
+    {}
 
     /**
      * Whether the solves need NodalSystem::material_boundary_functions().
