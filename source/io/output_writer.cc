@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <iomanip>
@@ -59,7 +60,14 @@ namespace MpmOtm
                       "0",
                       Patterns::Integer(0),
                       "Write output every this many time steps (0: only at "
-                      "the start and at the end time).");
+                      "the start and at the end time, or as Time interval "
+                      "says).");
+    prm.declare_entry("Time interval",
+                      "0",
+                      Patterns::Double(0),
+                      "Also write output in every time step that reaches a "
+                      "multiple of this time (s): every 0.01 s, say, "
+                      "whatever the time step (0: no such output).");
     prm.declare_entry("Write particle CSV",
                       "false",
                       Patterns::Bool(),
@@ -97,6 +105,7 @@ namespace MpmOtm
     prm.enter_subsection("Output");
     output_directory         = prm.get("Directory");
     interval                 = prm.get_integer("Interval");
+    time_interval            = prm.get_double("Time interval");
     write_csv                = prm.get_bool("Write particle CSV");
     const std::string format = prm.get("Format");
     AssertThrow(dim > 1 || format != "hdf5",
@@ -222,9 +231,19 @@ namespace MpmOtm
   template <int dim>
   bool
   OutputWriter<dim>::is_output_step(const unsigned int step,
+                                    const double       time_before,
+                                    const double       time_after,
                                     const bool         last) const
   {
-    return step == 0 || last || (interval > 0 && step % interval == 0);
+    if (step == 0 || last || (interval > 0 && step % interval == 0))
+      return true;
+    if (time_interval == 0)
+      return false;
+    // The step reaches a multiple of the interval if it passes one or ends
+    // on it; a millionth of the step absorbs the round-off of summed steps.
+    const double tolerance = 1e-6 * (time_after - time_before);
+    return std::floor((time_after + tolerance) / time_interval) >
+           std::floor((time_before + tolerance) / time_interval);
   }
 
 

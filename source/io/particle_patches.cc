@@ -16,6 +16,11 @@ namespace MpmOtm
     const bool                  stress_as_components)
     : stress_as_components(stress_as_components)
   {
+    // zlib's fastest level: the best level took several times longer per
+    // output for files a few percent smaller.
+    DataOutBase::VtkFlags flags;
+    flags.compression_level = DataOutBase::VtkFlags::best_speed;
+    this->set_flags(flags);
     using Layout = PropertyLayout<dim>;
     for (unsigned int d = 0; d < dim; ++d)
       names.push_back("displacement");

@@ -138,11 +138,14 @@ namespace MpmOtm
       for (unsigned int step = resumed_step + 1; step <= n_steps; ++step)
         {
           const double dt = std::min(time_step, end_time - current_time);
+          const bool   output_step = output->is_output_step(step,
+                                                          current_time,
+                                                          current_time + dt,
+                                                          step == n_steps);
           try
             {
               stepper.advance(current_time, dt);
-              if (step % 10 == 0 ||
-                  output->is_output_step(step, step == n_steps))
+              if (step % 10 == 0 || output_step)
                 {
                   energy_monitor.check(*points,
                                        *materials,
@@ -162,7 +165,7 @@ namespace MpmOtm
               break;
             }
           current_time = (step == n_steps) ? end_time : current_time + dt;
-          if (output->is_output_step(step, step == n_steps) || !signal.empty())
+          if (output_step || !signal.empty())
             report(step);
           if (step < n_steps &&
               (!signal.empty() || checkpoint->is_due(step, communicator)))

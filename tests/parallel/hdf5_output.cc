@@ -15,10 +15,12 @@
 // The grid (grid_00004.h5, written patch by patch, GridPatches::write_hdf5):
 // with linear functions 16 quadrilaterals of 4 own nodes each (64 nodes),
 // with quadratic B-splines (their Bernstein form, each cell a patch of 3 x 3
-// nodes subdivided twice) 64 quadrilaterals on 144 nodes; every
-// cell's corners counter-clockwise with the area of a cell (shoelace
-// formula), and the nodal velocity (1, 0, 0) at every node (every function
-// carries mass, and the functions sum to one).
+// nodes subdivided twice) 64 quadrilaterals on 144 nodes, with linear
+// functions on triangles (four per block around its centre; on one rank,
+// as simplex grids run) 64 triangles of 3 own nodes each (192 nodes);
+// every cell's corners counter-clockwise with the area of a cell
+// (shoelace formula), and the nodal velocity (1, 0, 0) at every node
+// (every function carries mass, and the functions sum to one).
 //
 // The run writes a checkpoint at step 2 and is then resumed from it: the
 // resumed run must continue the series it was written with, so the index
@@ -112,13 +114,14 @@ check_index(const std::string &when)
 
 /**
  * Check grid_00004.h5 of the run with @p family: @p n_cells counter-clockwise
- * quadrilaterals of area 1 / n_cells on @p n_nodes nodes, and the velocity
- * (1, 0, 0) at every node.
+ * cells of @p n_vertices vertices and area 1 / n_cells on @p n_nodes nodes,
+ * and the velocity (1, 0, 0) at every node.
  */
 void
 check_grid(const std::string &family,
            const unsigned int n_cells,
-           const unsigned int n_nodes)
+           const unsigned int n_nodes,
+           const unsigned int n_vertices = 4)
 {
   HDF5::File file("output-hdf5/grid_00004.h5",
                   HDF5::File::FileAccessMode::open);
@@ -127,17 +130,18 @@ check_grid(const std::string &family,
     file.open_dataset("cells").read<std::vector<unsigned int>>();
   const auto velocity =
     file.open_dataset("nodal_velocity").read<std::vector<float>>();
-  check(cells.size() == 4 * n_cells && nodes.size() == 2 * n_nodes &&
+  check(cells.size() == n_vertices * n_cells && nodes.size() == 2 * n_nodes &&
           velocity.size() == 3 * n_nodes,
         family + ": grid_00004.h5 must hold " + std::to_string(n_cells) +
-          " quadrilaterals on " + std::to_string(n_nodes) + " nodes");
+          " cells of " + std::to_string(n_vertices) + " vertices on " +
+          std::to_string(n_nodes) + " nodes");
   for (unsigned int c = 0; c < n_cells; ++c)
     {
       double area = 0;
-      for (unsigned int v = 0; v < 4; ++v)
+      for (unsigned int v = 0; v < n_vertices; ++v)
         {
-          const unsigned int i = cells[4 * c + v],
-                             j = cells[4 * c + (v + 1) % 4];
+          const unsigned int i = cells[n_vertices * c + v],
+                             j = cells[n_vertices * c + (v + 1) % n_vertices];
           area += 0.5 * (nodes[2 * i] * nodes[2 * j + 1] -
                          nodes[2 * j] * nodes[2 * i + 1]);
         }
@@ -206,4 +210,13 @@ main(int argc, char **argv)
     ->run();
   if (root)
     check_grid("quadratic B-splines", 64, 144);
+
+  if (root)
+    {
+      simulator_from_text<2>(
+        parameters + "subsection Mesh\n set Cell type = simplex\nend\n",
+        MPI_COMM_SELF)
+        ->run();
+      check_grid("linear on triangles", 64, 192, 3);
+    }
 }

@@ -35,7 +35,8 @@ namespace MpmOtm
    * statistics.csv with one row per output step; and, when asked,
    * particles-NNNNN.csv with one row per material point sorted by id. NNNNN
    * is the time-step number; output is written at step 0, every Interval
-   * steps and at the end time. Files are written under a temporary name and
+   * steps, in every step that reaches a multiple of Time interval, and at
+   * the end time. Files are written under a temporary name and
    * renamed when complete, and an index (.pvtu, .pvd, .xdmf) only after every
    * file it names is complete, so that a run killed at any moment leaves
    * readable output; a failed write (a full disk) stops the run on all
@@ -92,10 +93,14 @@ namespace MpmOtm
     load(const CheckpointState &state);
 
     /**
-     * Whether @p step is an output step (@p last: the final step).
+     * Whether @p step, from @p time_before to @p time_after, is an output
+     * step (@p last: the final step).
      */
     bool
-    is_output_step(const unsigned int step, const bool last) const;
+    is_output_step(const unsigned int step,
+                   const double       time_before,
+                   const double       time_after,
+                   const bool         last) const;
 
     /**
      * Write every file of one output step.
@@ -158,11 +163,12 @@ namespace MpmOtm
                      const Statistics<dim> &statistics) const;
 
     std::string        output_directory;
-    unsigned int       interval     = 0;
-    bool               write_csv    = false;
-    bool               write_fields = true;
-    TimeSeries::Format field_format = TimeSeries::Format::vtu;
-    bool               overwrite    = false;
+    unsigned int       interval      = 0;
+    double             time_interval = 0;
+    bool               write_csv     = false;
+    bool               write_fields  = true;
+    TimeSeries::Format field_format  = TimeSeries::Format::vtu;
+    bool               overwrite     = false;
     /// Where to show the Powell-Sabin functions (empty: nowhere).
     std::vector<double>         powell_sabin_basis_point;
     MPI_Comm                    mpi_communicator           = MPI_COMM_WORLD;
