@@ -8,6 +8,8 @@
 #include <mpm_otm/material_points/material_points.h>
 #include <mpm_otm/shape_functions/linear_lagrange.h>
 
+#include <bitset>
+
 namespace MpmOtm
 {
   template <int dim>
@@ -166,6 +168,34 @@ namespace MpmOtm
 
 
   template <int dim>
+  bool
+  LinearLagrange<dim>::is_affine(const std::vector<Point<dim>> &vertices)
+  {
+    // The map sum_i x_i N_i(xi) of a hypercube is affine if the coefficients
+    // of its products xi_a xi_b (xi_c) vanish: for every set S of two or
+    // more directions, sum over the vertices T in S of (-1)^(|S| - |T|) x_T,
+    // vertex T sitting at xi_d = 1 for d in T (bit d of its number).
+    const double scale = vertices.back().distance(vertices.front());
+    for (unsigned int S = 0; S < vertices.size(); ++S)
+      {
+        if (S == 0 || (S & (S - 1)) == 0)
+          continue;
+        Tensor<1, dim> coefficient;
+        for (unsigned int T = 0; T < vertices.size(); ++T)
+          if ((T & S) == T)
+            {
+              const bool even = std::bitset<3>(S ^ T).count() % 2 == 0;
+              coefficient += (even ? 1. : -1.) * vertices[T];
+            }
+        if (coefficient.norm() > 1e-12 * scale)
+          return false;
+      }
+    return true;
+  }
+
+
+
+  template <int dim>
   void
   LinearLagrange<dim>::evaluate(const MaterialPoints<dim> &material_points,
                                 const Utilities::MPI::Partitioner &partitioner,
@@ -185,6 +215,11 @@ namespace MpmOtm
     std::vector<Point<dim>>              vertices(n_functions);
     std::vector<Tensor<1, dim>>          reference_gradients(n_functions);
     typename Triangulation<dim>::active_cell_iterator current_cell;
+    // On an affine cell (a simplex, a parallelogram, a parallelepiped) the
+    // Jacobian is the same at every point: its columns are the edges from
+    // vertex 0 along the reference axes, inverted once per cell.
+    bool           affine = false;
+    Tensor<2, dim> inverse_transpose;
 
     unsigned int k = 0;
     for (const auto &particle : particles)
@@ -204,6 +239,19 @@ namespace MpmOtm
                 local_indices[i] = partitioner.global_to_local(dof_indices[i]);
                 vertices[i]      = cell->vertex(i);
               }
+            affine = simplex || is_affine(vertices);
+            if (affine)
+              {
+                Tensor<2, dim> jacobian;
+                for (unsigned int b = 0; b < dim; ++b)
+                  {
+                    const Tensor<1, dim> edge =
+                      vertices[simplex ? b + 1 : 1u << b] - vertices[0];
+                    for (unsigned int a = 0; a < dim; ++a)
+                      jacobian[a][b] = edge[a];
+                  }
+                inverse_transpose = transpose(invert(jacobian));
+              }
           }
 
         const unsigned int offset = k * n_functions;
@@ -215,13 +263,16 @@ namespace MpmOtm
                          values,
                          reference_gradients.data());
 
-        // Isoparametric Jacobian J_ab = sum_i x_i,a dN_i/dxi_b.
-        Tensor<2, dim> jacobian;
-        for (unsigned int i = 0; i < n_functions; ++i)
-          for (unsigned int a = 0; a < dim; ++a)
-            for (unsigned int b = 0; b < dim; ++b)
-              jacobian[a][b] += vertices[i][a] * reference_gradients[i][b];
-        const Tensor<2, dim> inverse_transpose = transpose(invert(jacobian));
+        if (!affine)
+          {
+            // Isoparametric Jacobian J_ab = sum_i x_i,a dN_i/dxi_b.
+            Tensor<2, dim> jacobian;
+            for (unsigned int i = 0; i < n_functions; ++i)
+              for (unsigned int a = 0; a < dim; ++a)
+                for (unsigned int b = 0; b < dim; ++b)
+                  jacobian[a][b] += vertices[i][a] * reference_gradients[i][b];
+            inverse_transpose = transpose(invert(jacobian));
+          }
         for (unsigned int i = 0; i < n_functions; ++i)
           {
             data.indices[offset + i] = local_indices[i];

@@ -7,6 +7,7 @@
 #include <mpm_otm/shape_functions/shape_functions.h>
 
 #include <memory>
+#include <vector>
 
 namespace MpmOtm
 {
@@ -65,6 +66,14 @@ namespace MpmOtm
 
     bool
     is_linearly_complete() const override;
+
+    /**
+     * Whether the hypercube cell with @p vertices (in deal.II's order) is
+     * the affine image of the reference cell (a parallelogram or a
+     * parallelepiped), to round-off: then its Jacobian is constant.
+     */
+    static bool
+    is_affine(const std::vector<Point<dim>> &vertices);
 
     /**
      * Values and reference-cell gradients of the 2^dim (hypercube) or dim + 1
