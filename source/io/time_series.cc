@@ -70,17 +70,7 @@ namespace MpmOtm
         write_vtu(patches, directory, step, time, communicator);
         return;
       }
-    data_sets = patches.data_sets();
-    write_hdf5_step(
-      directory,
-      step,
-      time,
-      patches.n_nodes(),
-      patches.n_cells(),
-      [&](const std::string &file_name) {
-        patches.write_hdf5(file_name, communicator);
-      },
-      communicator);
+    write_hdf5_step(patches, directory, step, time, communicator);
   }
 
 
@@ -139,14 +129,11 @@ namespace MpmOtm
 
 
   void
-  TimeSeries::write_hdf5_step(
-    const std::string                              &directory,
-    const unsigned int                              step,
-    const double                                    time,
-    const std::uint64_t                             n_local_nodes,
-    const std::uint64_t                             n_local_cells,
-    const std::function<void(const std::string &)> &write_file,
-    const MPI_Comm                                  communicator)
+  TimeSeries::write_hdf5_step(const HDF5Patches &patches,
+                              const std::string &directory,
+                              const unsigned int step,
+                              const double       time,
+                              const MPI_Comm     communicator)
   {
     // All ranks write one file together, under a temporary name that rank
     // 0 renames once every rank is done.
@@ -155,7 +142,7 @@ namespace MpmOtm
     std::string       problem;
     try
       {
-        write_file(temporary);
+        patches.write_hdf5(temporary, communicator);
       }
     catch (const std::exception &error)
       {
@@ -171,10 +158,11 @@ namespace MpmOtm
       }
     stop_if_any_rank_failed(communicator, problem, "", disk_advice);
     format_of_steps = Format::hdf5;
+    data_sets       = patches.data_sets();
     steps.push_back({time,
                      step,
-                     Utilities::MPI::sum(n_local_nodes, communicator),
-                     Utilities::MPI::sum(n_local_cells, communicator)});
+                     Utilities::MPI::sum(patches.n_nodes(), communicator),
+                     Utilities::MPI::sum(patches.n_cells(), communicator)});
     write_index(directory, Format::hdf5, communicator);
   }
 

@@ -6,6 +6,7 @@
 #include <deal.II/numerics/data_out.h>
 
 #include <mpm_otm/grid_system/nodal_system.h>
+#include <mpm_otm/io/hdf5_patches.h>
 #include <mpm_otm/shape_functions/shape_functions.h>
 
 #include <array>
@@ -32,7 +33,7 @@ namespace MpmOtm
    * DataOutFilter and its map of all points.
    */
   template <int dim>
-  class GridPatches : public DataOut<dim>
+  class GridPatches : public DataOut<dim>, public HDF5Patches
   {
   public:
     /**
@@ -44,37 +45,24 @@ namespace MpmOtm
                 NodalSystem<dim>          &system);
 
     /**
-     * Write the patches of all ranks into one HDF5 file @p file_name with
-     * the datasets an XDMF index points into (nodes, cells and one per
-     * data set of data_sets()). Collective.
+     * Each patch's points and sub-cells as they are (a patch subdivided n
+     * times has n^dim cells).
      */
     void
-    write_hdf5(const std::string &file_name, const MPI_Comm communicator) const;
+    write_hdf5(const std::string &file_name,
+               const MPI_Comm     communicator) const override;
 
-    /**
-     * The number of points of this rank's patches in write_hdf5().
-     */
     std::uint64_t
-    n_nodes() const;
+    n_nodes() const override;
 
-    /**
-     * The number of cells of this rank's patches in write_hdf5() (a patch
-     * subdivided n times has n^dim of them).
-     */
     std::uint64_t
-    n_cells() const;
+    n_cells() const override;
 
-    /**
-     * The kind of cell of the patches.
-     */
     ReferenceCell
-    reference_cell() const;
+    reference_cell() const override;
 
-    /**
-     * The data sets of write_hdf5() with their numbers of columns.
-     */
     std::vector<std::pair<std::string, unsigned int>>
-    data_sets() const;
+    data_sets() const override;
 
     std::vector<
       std::tuple<unsigned int,

@@ -5,6 +5,8 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/grid/reference_cell.h>
 
+#include <mpm_otm/io/hdf5_patches.h>
+
 #include <cstdint>
 #include <string>
 #include <tuple>
@@ -35,7 +37,7 @@ namespace MpmOtm
    * only for the VTU writer.
    */
   template <int dim>
-  class ParticlePatches : public DataOutInterface<0, dim>
+  class ParticlePatches : public DataOutInterface<0, dim>, public HDF5Patches
   {
   public:
     ParticlePatches(const MaterialPoints<dim>  &material_points,
@@ -43,38 +45,24 @@ namespace MpmOtm
                     const bool                  stress_as_components);
 
     /**
-     * Write the points of all ranks into one HDF5 file @p file_name, as
-     * deal.II's write_hdf5_parallel lays it out for an XDMF index (datasets
-     * nodes, cells and one per data set, vectors with three components),
-     * but directly, in double precision: each rank writes its rows of every
-     * dataset. Collective.
+     * The points as deal.II's write_hdf5_parallel lays them out, but
+     * directly, in double precision; each point is a cell.
      */
     void
-    write_hdf5(const std::string &file_name, const MPI_Comm communicator) const;
+    write_hdf5(const std::string &file_name,
+               const MPI_Comm     communicator) const override;
 
-    /**
-     * The number of points of this rank.
-     */
     std::uint64_t
-    n_nodes() const;
+    n_nodes() const override;
 
-    /**
-     * The number of cells of this rank in write_hdf5(): each point is one.
-     */
     std::uint64_t
-    n_cells() const;
+    n_cells() const override;
 
-    /**
-     * The kind of cell of the patches: a vertex.
-     */
     ReferenceCell
-    reference_cell() const;
+    reference_cell() const override;
 
-    /**
-     * The data sets of write_hdf5() with their numbers of components.
-     */
     std::vector<std::pair<std::string, unsigned int>>
-    data_sets() const;
+    data_sets() const override;
 
   private:
     const std::vector<DataOutBase::Patch<0, dim>> &

@@ -5,9 +5,9 @@
 #include <deal.II/grid/reference_cell.h>
 
 #include <mpm_otm/base/checkpoint_state.h>
+#include <mpm_otm/io/hdf5_patches.h>
 
 #include <cstdint>
-#include <functional>
 #include <string>
 #include <vector>
 
@@ -121,19 +121,16 @@ namespace MpmOtm
     };
 
     /**
-     * Write step @p step at @p time to one HDF5 file, which
-     * @p write_file(file name) writes on all ranks together (each with
-     * @p n_local_nodes and @p n_local_cells), under a temporary name renamed
-     * when complete; then add the step to the index. Collective.
+     * Write step @p step at @p time of @p patches to one HDF5 file that all
+     * ranks write together, under a temporary name renamed when complete;
+     * then add the step to the index. Collective.
      */
     void
-    write_hdf5_step(const std::string  &directory,
-                    const unsigned int  step,
-                    const double        time,
-                    const std::uint64_t n_local_nodes,
-                    const std::uint64_t n_local_cells,
-                    const std::function<void(const std::string &)> &write_file,
-                    const MPI_Comm communicator);
+    write_hdf5_step(const HDF5Patches &patches,
+                    const std::string &directory,
+                    const unsigned int step,
+                    const double       time,
+                    const MPI_Comm     communicator);
 
     /**
      * Write the index of @p format over #steps to @p directory; the
