@@ -54,30 +54,30 @@ set autoscale
 unset cbrange
 
 set output "figures/G4-deposits.png"
-set terminal pngcairo size 1000,420 font ",11"
-set title "G4: final deposits of the columns (L_0 = 0.2, a = H_0 / L_0), colour: equivalent plastic strain"
+set terminal pngcairo size 760,800 font ",11"
+set ytics 0.1
 set xlabel "x (m)"
 set ylabel "y (m)"
-set size ratio -1
-set xrange [0:1.0]
+set xrange [0:1.2]
 set yrange [0:0.42]
 set cbrange [0:2]
+set cblabel "equivalent plastic strain"
 set key top right
-plot "data/G4-deposit-2.dat" using 1:2:3 with points pt 5 ps 0.2 palette title "a = 2", \
-     "data/G4-deposit-1.dat" using 1:($2):3 with points pt 5 ps 0.2 palette notitle, \
-     "data/G4-deposit-0.5.dat" using 1:2:3 with points pt 5 ps 0.2 palette notitle, \
-     "-" using 1:2 with lines lc rgb "black" dt 2 title "initial columns"
-0 0.4
-0.2 0.4
-0.2 0
-
-0 0.2
-0.2 0.2
-
-0 0.1
-0.2 0.1
-e
-unset size
+# One panel per aspect ratio a = H0 / L0 (L0 = 0.2): the deposit coloured
+# by the equivalent plastic strain and the initial column.
+set multiplot layout 3,1 title "G4: final deposits of the columns (L_0 = 0.2), colour: equivalent plastic strain"
+do for [case in "0.5 1 2"] {
+  height = 0.2 * case
+  set title "a = ".case
+  set arrow 1 from 0, height to 0.2, height nohead dt 2 lc rgb "black" front
+  set arrow 2 from 0.2, height to 0.2, 0 nohead dt 2 lc rgb "black" front
+  plot "data/G4-deposit-".case.".dat" using 1:2:3 with points pt 5 ps 0.2 palette notitle, \
+       NaN with lines dt 2 lc rgb "black" title "initial column"
+}
+unset multiplot
+unset arrow
+unset cblabel
+set ytics autofreq
 set autoscale
 unset cbrange
 

@@ -13,10 +13,11 @@ namespace MpmOtm
   template <int dim>
   void
   ModifiedUpdateStressLast<dim>::compute_nodal_velocities(
-    NodalSystem<dim>             &system,
-    const MassMatrix<dim>        &mass_matrix,
-    const MaterialPoints<dim>    &material_points,
-    const ParticleShapeData<dim> &shape_data,
+    NodalSystem<dim>                             &system,
+    const MassMatrix<dim>                        &mass_matrix,
+    const MaterialPoints<dim>                    &material_points,
+    const ParticleShapeData<dim>                 &shape_data,
+    const typename NodalSystem<dim>::Constraints &constraints,
     const double,
     const double) const
   {
@@ -26,7 +27,7 @@ namespace MpmOtm
                         shape_data,
                         system.momentum[c],
                         system.velocity[c],
-                        system.constraints()[c]);
+                        constraints[c]);
   }
 
 

@@ -8,9 +8,10 @@ namespace MpmOtm
     NodalSystem<dim>      &system,
     const MassMatrix<dim> &mass_matrix,
     const MaterialPoints<dim> &,
-    const ParticleShapeData<dim> &shape_data,
-    const double                  dt,
-    const double                  previous_dt) const
+    const ParticleShapeData<dim>                 &shape_data,
+    const typename NodalSystem<dim>::Constraints &constraints,
+    const double                                  dt,
+    const double                                  previous_dt) const
   {
     const double centred_step = 0.5 * (dt + previous_dt);
     for (unsigned int c = 0; c < dim; ++c)
@@ -22,7 +23,7 @@ namespace MpmOtm
                           shape_data,
                           right_hand_side,
                           system.velocity[c],
-                          system.constraints()[c]);
+                          constraints[c]);
       }
   }
 

@@ -92,10 +92,14 @@ namespace MpmOtm
       }
     {
       TimerOutput::Scope scope(timer, "solve");
+      boundary_conditions.make_velocity_constraints(system,
+                                                    time + dt,
+                                                    velocity_constraints);
       nodal_update.compute_nodal_velocities(system,
                                             mass_matrix,
                                             material_points,
                                             data,
+                                            velocity_constraints,
                                             dt,
                                             previous_dt > 0. ? previous_dt :
                                                                dt);

@@ -16,17 +16,26 @@ namespace MpmOtm
     NodalSystem<dim>      &system,
     const MassMatrix<dim> &mass_matrix,
     const MaterialPoints<dim> &,
-    const ParticleShapeData<dim> &shape_data,
-    const double                  dt,
+    const ParticleShapeData<dim>                 &shape_data,
+    const typename NodalSystem<dim>::Constraints &constraints,
+    const double                                  dt,
     const double) const
   {
+    const Utilities::MPI::Partitioner &partitioner = system.partitioner();
     for (unsigned int c = 0; c < dim; ++c)
       {
+        start_constraints[c].copy_from(constraints[c]);
+        for (const auto &line : constraints[c].get_lines())
+          start_constraints[c].set_inhomogeneity(
+            line.index,
+            line.inhomogeneity -
+              dt * system.acceleration[c].local_element(
+                     partitioner.global_to_local(line.index)));
         mass_matrix.solve(system,
                           shape_data,
                           system.momentum[c],
                           system.velocity[c],
-                          system.constraints()[c]);
+                          start_constraints[c]);
         system.velocity[c].add(dt, system.acceleration[c]);
       }
   }

@@ -9,12 +9,18 @@ namespace MpmOtm
 {
   namespace
   {
+    // FunctionParser<dim> always takes dim coordinates: an expression in
+    // time only gets them under names no one writes.
     std::string
-    variable_list(const unsigned int dim, const bool time_dependent)
+    variable_list(const unsigned int dim,
+                  const bool         time_dependent,
+                  const bool         space_dependent)
     {
       std::string result;
       for (unsigned int d = 0; d < dim; ++d)
-        result += (d > 0 ? "," : "") + std::string(1, "xyz"[d]);
+        result += (d > 0 ? "," : "") +
+                  std::string(space_dependent ? "" : "unused_coordinate_") +
+                  std::string(1, "xyz"[d]);
       return time_dependent ? result + ",t" : result;
     }
   } // namespace
@@ -25,10 +31,13 @@ namespace MpmOtm
   ParsedExpression<dim>::ParsedExpression(const std::string &text,
                                           const unsigned int n_components,
                                           const bool         time_dependent,
-                                          const std::string &entry)
+                                          const std::string &entry,
+                                          const bool         space_dependent)
     : entry(entry)
     , time_dependent(time_dependent)
+    , space_dependent(space_dependent)
   {
+    Assert(space_dependent || time_dependent, ExcInternalError());
     const auto parts = Utilities::split_string_list(text, ';');
     AssertThrow(parts.size() == n_components,
                 ExcMessage(entry + ": <" + text + "> must be " +
@@ -41,7 +50,9 @@ namespace MpmOtm
     function = std::make_unique<FunctionParser<dim>>(n_components);
     try
       {
-        function->initialize(variable_list(dim, time_dependent),
+        function->initialize(variable_list(dim,
+                                           time_dependent,
+                                           space_dependent),
                              parts,
                              {{"pi", numbers::PI}},
                              time_dependent);
@@ -91,6 +102,8 @@ namespace MpmOtm
   std::string
   ParsedExpression<dim>::variables() const
   {
+    if (!space_dependent)
+      return "t";
     std::string result;
     for (unsigned int d = 0; d < dim; ++d)
       result += (d > 0 ? ", " : "") + std::string(1, "xyz"[d]);
@@ -116,17 +129,24 @@ namespace MpmOtm
       {
         result = std::numeric_limits<double>::quiet_NaN();
       }
-    AssertThrow(
-      std::isfinite(result),
-      ExcMessage(
-        entry + ": expression " + std::to_string(component + 1) +
-        " does not evaluate to a finite number at (" +
-        Utilities::to_string(point[0]) +
-        (dim > 1 ? ", " + Utilities::to_string(point[1]) : std::string()) +
-        (dim > 2 ? ", " + Utilities::to_string(point[2]) : std::string()) +
-        (time_dependent ? "), t = " + Utilities::to_string(time) :
-                          std::string(")")) +
-        "."));
+    if (!std::isfinite(result))
+      {
+        std::string where;
+        if (space_dependent)
+          {
+            where = " at (" + Utilities::to_string(point[0]);
+            for (unsigned int d = 1; d < dim; ++d)
+              where += ", " + Utilities::to_string(point[d]);
+            where += ")";
+          }
+        if (time_dependent)
+          where += (space_dependent ? ", t = " : " at t = ") +
+                   Utilities::to_string(time);
+        AssertThrow(false,
+                    ExcMessage(
+                      entry + ": expression " + std::to_string(component + 1) +
+                      " does not evaluate to a finite number" + where + "."));
+      }
     return result;
   }
 

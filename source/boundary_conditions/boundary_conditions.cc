@@ -183,13 +183,14 @@ namespace MpmOtm
                                        std::to_string(dim) + "D."));
                 condition.components[c] = true;
               }
-            // The velocity is a function of time only: read it as an
-            // expression in t on a one-dimensional point.
+            // The velocity is a function of time only (the condition's
+            // nodes move as one).
             condition.velocity =
               std::make_unique<ParsedExpression<dim>>(prm.get("Velocity"),
                                                       dim,
                                                       true,
-                                                      path + "Velocity");
+                                                      path + "Velocity",
+                                                      false);
             condition.velocity->vector_value(Point<dim>(), 0.);
           }
         prm.leave_subsection();
@@ -482,12 +483,51 @@ namespace MpmOtm
     const double                            dt,
     typename NodalSystem<dim>::Constraints &constraints)
   {
-    for (unsigned int c = 0; c < dim; ++c)
-      constraints[c].copy_from(system.constraints()[c]);
     // A box of prescribed velocity moves with its displacement.
     for (auto &condition : conditions)
       if (condition.on_box && condition.type == Type::velocity)
         find_box_functions(condition);
+    add_prescribed_lines(
+      system,
+      time + dt,
+      [&](const unsigned int i, const unsigned int c, const double target) {
+        return (target - system.momentum[c].local_element(i) /
+                           system.lumped_mass.local_element(i)) /
+               dt;
+      },
+      constraints);
+  }
+
+
+
+  template <int dim>
+  void
+  BoundaryConditions<dim>::make_velocity_constraints(
+    const NodalSystem<dim>                 &system,
+    const double                            time,
+    typename NodalSystem<dim>::Constraints &constraints) const
+  {
+    add_prescribed_lines(
+      system,
+      time,
+      [](const unsigned int, const unsigned int, const double target) {
+        return target;
+      },
+      constraints);
+  }
+
+
+
+  template <int dim>
+  void
+  BoundaryConditions<dim>::add_prescribed_lines(
+    const NodalSystem<dim>                                          &system,
+    const double                                                     time,
+    const std::function<double(unsigned int, unsigned int, double)> &value,
+    typename NodalSystem<dim>::Constraints &constraints) const
+  {
+    for (unsigned int c = 0; c < dim; ++c)
+      constraints[c].copy_from(system.constraints()[c]);
     const Utilities::MPI::Partitioner &partitioner = system.partitioner();
     for (const auto &condition : conditions)
       {
@@ -498,11 +538,10 @@ namespace MpmOtm
             }))
           continue;
         const Tensor<1, dim> target =
-          corrected_velocity(condition, Tensor<1, dim>(), time + dt);
+          corrected_velocity(condition, Tensor<1, dim>(), time);
         for (const unsigned int i : condition.functions)
           {
-            const double m = system.lumped_mass.local_element(i);
-            if (!(m > 0.))
+            if (!(system.lumped_mass.local_element(i) > 0.))
               continue;
             const types::global_dof_index global =
               partitioner.local_to_global(i);
@@ -510,9 +549,8 @@ namespace MpmOtm
               if (components[c])
                 {
                   constraints[c].add_line(global);
-                  constraints[c].set_inhomogeneity(
-                    global,
-                    (target[c] - system.momentum[c].local_element(i) / m) / dt);
+                  constraints[c].set_inhomogeneity(global,
+                                                   value(i, c, target[c]));
                 }
           }
       }
@@ -611,36 +649,34 @@ namespace MpmOtm
   template <int dim>
   void
   BoundaryConditions<dim>::constrain_velocities(NodalSystem<dim> &system,
-                                                const double      time)
+                                                const double      time) const
   {
     for (const auto &condition : conditions)
       {
-        // The work of the impulse m (v_corrected - v) of a prescribed
-        // velocity (the reaction for the nodal updates that do not solve
-        // for accelerations).
-        double work = 0.;
+        if (condition.type != Type::friction && condition.type != Type::slip)
+          continue;
+        const std::array<bool, dim> components =
+          constrained_components(condition);
+        if (std::any_of(components.begin(), components.end(), [](bool b) {
+              return b;
+            }))
+          continue;
         for (unsigned int k = 0; k < condition.functions.size(); ++k)
           {
             const unsigned int i = condition.functions[k];
-            const double       m = system.lumped_mass.local_element(i);
-            if (!(m > 0.))
+            if (!(system.lumped_mass.local_element(i) > 0.) ||
+                (condition.type == Type::friction && !condition.in_contact[k]))
               continue;
             Tensor<1, dim> v;
             for (unsigned int c = 0; c < dim; ++c)
               v[c] = system.velocity[c].local_element(i);
-            Tensor<1, dim> corrected;
-            if (condition.type != Type::friction)
-              corrected = corrected_velocity(condition, v, time);
-            else if (condition.in_contact[k])
-              corrected = v - (v * condition.normal) * condition.normal;
-            else
-              corrected = v;
-            if (condition.type == Type::velocity)
-              work += m * ((corrected - v) * corrected);
+            const Tensor<1, dim> corrected =
+              condition.type == Type::friction ?
+                v - (v * condition.normal) * condition.normal :
+                corrected_velocity(condition, v, time);
             for (unsigned int c = 0; c < dim; ++c)
               system.velocity[c].local_element(i) = corrected[c];
           }
-        work_of_prescribed_velocities += std::max(work, 0.);
       }
   }
 

@@ -18,12 +18,14 @@ namespace MpmOtm
     declare_parameters(ParameterHandler &prm);
 
     void
-    compute_nodal_velocities(NodalSystem<dim>             &system,
-                             const MassMatrix<dim>        &mass_matrix,
-                             const MaterialPoints<dim>    &material_points,
-                             const ParticleShapeData<dim> &shape_data,
-                             const double                  dt,
-                             const double previous_dt) const override;
+    compute_nodal_velocities(
+      NodalSystem<dim>                             &system,
+      const MassMatrix<dim>                        &mass_matrix,
+      const MaterialPoints<dim>                    &material_points,
+      const ParticleShapeData<dim>                 &shape_data,
+      const typename NodalSystem<dim>::Constraints &constraints,
+      const double                                  dt,
+      const double                                  previous_dt) const override;
   };
 } // namespace MpmOtm
 

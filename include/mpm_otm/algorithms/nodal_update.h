@@ -49,17 +49,23 @@ namespace MpmOtm
     {}
 
     /**
-     * Fill system.velocity (locally owned entries) for the step @p dt;
-     * @p previous_dt is the length of the step before (equal to @p dt in the
-     * first step, where OTM sets x_p^{-1} = x_p^0 - dt v_p^0).
+     * Fill system.velocity (locally owned entries) for the step @p dt,
+     * subject to @p constraints, one per component, on the velocities at
+     * the end of the step (the system's own and the boundary conditions'
+     * prescribed values: with a consistent mass matrix the free
+     * coefficients feel the prescribed ones); @p previous_dt is the length
+     * of the step before (equal to @p dt in the first step, where OTM sets
+     * x_p^{-1} = x_p^0 - dt v_p^0).
      */
     virtual void
-    compute_nodal_velocities(NodalSystem<dim>             &system,
-                             const MassMatrix<dim>        &mass_matrix,
-                             const MaterialPoints<dim>    &material_points,
-                             const ParticleShapeData<dim> &shape_data,
-                             const double                  dt,
-                             const double previous_dt) const = 0;
+    compute_nodal_velocities(
+      NodalSystem<dim>                             &system,
+      const MassMatrix<dim>                        &mass_matrix,
+      const MaterialPoints<dim>                    &material_points,
+      const ParticleShapeData<dim>                 &shape_data,
+      const typename NodalSystem<dim>::Constraints &constraints,
+      const double                                  dt,
+      const double                                  previous_dt) const = 0;
 
     /**
      * True if the time step must solve the nodal accelerations

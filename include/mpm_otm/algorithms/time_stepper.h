@@ -118,6 +118,12 @@ namespace MpmOtm
     typename NodalSystem<dim>::Constraints acceleration_constraints;
 
     /**
+     * The constraints of the solves for the velocities at the end of the
+     * step: the system's, with the prescribed velocities.
+     */
+    typename NodalSystem<dim>::Constraints velocity_constraints;
+
+    /**
      * Length of the previous step (0 before the first).
      */
     double previous_dt = 0.;

@@ -14,10 +14,10 @@ namespace MpmOtm
 
   /**
    * A list of muparser expressions from one parameter entry, separated by
-   * ';', in the coordinates (x, y, z: the first dim of them) and, if asked
-   * for, the time t, with the constant pi. Parse errors and values that are
-   * not finite stop the run with a message that names the entry and the
-   * variables allowed, instead of muparser's own.
+   * ';', in the coordinates (x, y, z: the first dim of them; unless asked
+   * not to) and, if asked for, the time t, with the constant pi. Parse errors
+   * and values that are not finite stop the run with a message that names the
+   * entry and the variables allowed, instead of muparser's own.
    */
   template <int dim>
   class ParsedExpression
@@ -26,11 +26,14 @@ namespace MpmOtm
     /**
      * Parse @p text, which must hold @p n_components expressions; @p entry
      * names the parameter (e.g. "Body beam/Initial velocity") in messages.
+     * Without @p space_dependent the expressions may use t only (and a
+     * coordinate in them is a parse error).
      */
     ParsedExpression(const std::string &text,
                      const unsigned int n_components,
                      const bool         time_dependent,
-                     const std::string &entry);
+                     const std::string &entry,
+                     const bool         space_dependent = true);
 
     ~ParsedExpression();
 
@@ -71,6 +74,7 @@ namespace MpmOtm
   private:
     std::string                          entry;
     bool                                 time_dependent;
+    bool                                 space_dependent;
     bool                                 zero = false;
     std::unique_ptr<FunctionParser<dim>> function;
   };

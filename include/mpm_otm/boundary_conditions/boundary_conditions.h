@@ -10,6 +10,7 @@
 #include <mpm_otm/base/parsed_expression.h>
 #include <mpm_otm/problems/problem.h>
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -45,15 +46,17 @@ namespace MpmOtm
    * 2001). The conditions that fix components - fixed, slip on a side
    * normal to a coordinate direction, prescribed velocity - enter the
    * solve for the accelerations as inhomogeneous affine constraints
-   * a_i = (v_prescribed - v_i) / dt (make_acceleration_constraints()), so
-   * that with a consistent mass matrix the free coefficients feel the
-   * prescribed ones. Friction and slip on an inclined side are not affine
-   * in one component: after the solve, each node's velocity
-   * v* = v + dt a is corrected - for friction the velocity into the wall
-   * (along the boundary's outward normal n, v*.n > 0) is removed and the
-   * tangential velocity reduced by at most mu times the removed normal
-   * velocity - and the acceleration set to (v_new - v) / dt, so that the
-   * particles follow.
+   * a_i = (v_prescribed - v_i) / dt (make_acceleration_constraints()), and
+   * the solves for the velocities of the end of the step (USL's
+   * M v = q, MUSL's re-projection, OTM's solve) as v_i = v_prescribed
+   * (make_velocity_constraints()), so that with a consistent mass matrix
+   * the free coefficients feel the prescribed ones in every solve. Friction
+   * and slip on an inclined side are not affine in one component: after
+   * the solve, each node's velocity v* = v + dt a is corrected - for
+   * friction the velocity into the wall (along the boundary's outward
+   * normal n, v*.n > 0) is removed and the tangential velocity reduced by
+   * at most mu times the removed normal velocity - and the acceleration set
+   * to (v_new - v) / dt, so that the particles follow.
    * A frictional wall acts on a node only where the material touches it:
    * the gap between the wall and the points in the node's support (each
    * point's distance from the wall less half its size, the smallest over
@@ -149,11 +152,28 @@ namespace MpmOtm
                             const double                  dt);
 
     /**
-     * Impose the conditions on the nodal velocities of the end of the step
-     * (locally owned entries of system.velocity) at time @p time.
+     * Set @p constraints to the system's NodalSystem::constraints() and add
+     * the conditions that fix components, v_i = v_prescribed(@p time), for
+     * the velocities of the end of the step that reaches @p time, on the
+     * nodes with mass. Call after make_acceleration_constraints() of the
+     * step, which moves the boxes.
      */
     void
-    constrain_velocities(NodalSystem<dim> &system, const double time);
+    make_velocity_constraints(
+      const NodalSystem<dim>                 &system,
+      const double                            time,
+      typename NodalSystem<dim>::Constraints &constraints) const;
+
+    /**
+     * Correct the nodal velocities of the end of the step (locally owned
+     * entries of system.velocity, solved subject to
+     * make_velocity_constraints()) at @p time for the conditions that are
+     * not affine in one component: slip on an inclined side, and friction
+     * on the nodes found in contact in constrain_accelerations(), which
+     * keep no normal velocity.
+     */
+    void
+    constrain_velocities(NodalSystem<dim> &system, const double time) const;
 
     /**
      * The work done by the prescribed velocities on this rank's nodes since
@@ -236,6 +256,20 @@ namespace MpmOtm
      */
     std::array<bool, dim>
     constrained_components(const Condition &condition) const;
+
+    /**
+     * Set @p constraints to the system's NodalSystem::constraints() and add
+     * a line per component that a condition fixes on each of its nodes with
+     * mass, with the inhomogeneity @p value(i, c, target) for the local
+     * index i, the component c and the condition's velocity target at
+     * @p time.
+     */
+    void
+    add_prescribed_lines(
+      const NodalSystem<dim>                                          &system,
+      const double                                                     time,
+      const std::function<double(unsigned int, unsigned int, double)> &value,
+      typename NodalSystem<dim>::Constraints &constraints) const;
 
     /**
      * The corrected velocity of a node with velocity @p v under
