@@ -32,6 +32,16 @@ namespace MpmOtm
 
 
 
+  template <int dim>
+  typename NodalUpdate<dim>::ParticleVelocity
+  ModifiedUpdateStressLast<dim>::particle_velocity() const
+  {
+    return NodalUpdate<
+      dim>::ParticleVelocity::from_acceleration_before_projection;
+  }
+
+
+
   template class ModifiedUpdateStressLast<1>;
   template class ModifiedUpdateStressLast<2>;
   template class ModifiedUpdateStressLast<3>;

@@ -82,10 +82,10 @@ namespace MpmOtm
         for (unsigned int c = 0; c < dim; ++c)
           system.acceleration[c].update_ghost_values();
       }
-    const bool velocity_from_displacement =
-      nodal_update.particle_velocity() ==
-      NodalUpdate<dim>::ParticleVelocity::from_displacement;
-    if (!velocity_from_displacement)
+    using ParticleVelocity = typename NodalUpdate<dim>::ParticleVelocity;
+    const ParticleVelocity particle_velocity = nodal_update.particle_velocity();
+    if (particle_velocity ==
+        ParticleVelocity::from_acceleration_before_projection)
       {
         TimerOutput::Scope scope(timer, "grid to particle");
         advance_particle_velocities(dt);
@@ -109,7 +109,7 @@ namespace MpmOtm
     }
     {
       TimerOutput::Scope scope(timer, "grid to particle");
-      update_particles(dt, velocity_from_displacement);
+      update_particles(dt, particle_velocity);
     }
     {
       TimerOutput::Scope scope(timer, "move grid, locate particles");
@@ -146,21 +146,38 @@ namespace MpmOtm
 
   template <int dim>
   void
-  TimeStepper<dim>::update_particles(const double dt,
-                                     const bool   velocity_from_displacement)
+  TimeStepper<dim>::update_particles(
+    const double                                      dt,
+    const typename NodalUpdate<dim>::ParticleVelocity particle_velocity)
   {
     using Layout = PropertyLayout<dim>;
     const double *v[dim];
+    const double *a[dim];
     for (unsigned int c = 0; c < dim; ++c)
-      v[c] = system.velocity[c].get_values();
+      {
+        v[c] = system.velocity[c].get_values();
+        a[c] = system.acceleration[c].get_values();
+      }
+    const bool velocity_from_acceleration =
+      particle_velocity ==
+      NodalUpdate<dim>::ParticleVelocity::from_acceleration;
+    const bool velocity_from_displacement =
+      particle_velocity ==
+      NodalUpdate<dim>::ParticleVelocity::from_displacement;
 
     types::particle_index bad_point = numbers::invalid_unsigned_int;
     Point<dim>            bad_location;
     unsigned int          k = 0;
     for (auto &particle : material_points.particle_handler())
       {
+        const auto     properties = particle.get_properties();
         Tensor<1, dim> point_velocity;
         Tensor<2, dim> velocity_gradient;
+        // The particle's velocity, advanced in the order of
+        // advance_particle_velocities() (the same round-off).
+        Tensor<1, dim> advanced_velocity;
+        if (velocity_from_acceleration)
+          advanced_velocity = Layout::get_vector(properties, Layout::velocity);
         for (unsigned int e = data.offsets[k]; e < data.offsets[k + 1]; ++e)
           {
             const unsigned int    i    = data.indices[e];
@@ -170,9 +187,13 @@ namespace MpmOtm
                 point_velocity[c] += data.values[e] * v[c][i];
                 velocity_gradient[c] += v[c][i] * grad;
               }
+            if (velocity_from_acceleration)
+              for (unsigned int c = 0; c < dim; ++c)
+                advanced_velocity[c] += dt * data.values[e] * a[c][i];
           }
-        const auto properties = particle.get_properties();
-        if (velocity_from_displacement)
+        if (velocity_from_acceleration)
+          Layout::set_vector(properties, Layout::velocity, advanced_velocity);
+        else if (velocity_from_displacement)
           Layout::set_vector(properties, Layout::velocity, point_velocity);
 
         Tensor<2, dim> F = Layout::get_deformation_gradient(properties);

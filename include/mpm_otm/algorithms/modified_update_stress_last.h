@@ -26,6 +26,9 @@ namespace MpmOtm
       const typename NodalSystem<dim>::Constraints &constraints,
       const double                                  dt,
       const double                                  previous_dt) const override;
+
+    typename NodalUpdate<dim>::ParticleVelocity
+    particle_velocity() const override;
   };
 } // namespace MpmOtm
 

@@ -27,10 +27,16 @@ namespace MpmOtm
     enum class ParticleVelocity
     {
       /**
-       * v_p^{s+1} = v_p^s + dt sum_i phi_i a_i (journal Eq. 27), before the
-       * nodal velocities are computed (MUSL projects the result).
+       * v_p^{s+1} = v_p^s + dt sum_i phi_i a_i (journal Eq. 27), in the
+       * same pass over the points that moves them (the nodal velocities do
+       * not depend on it: USL).
        */
       from_acceleration,
+      /**
+       * The same update, in a pass of its own before the nodal velocities
+       * are computed, since they project the result (MUSL).
+       */
+      from_acceleration_before_projection,
       /**
        * v_p^{s+1} = (x_p^{s+1} - x_p^s) / dt, the velocity that OTM's
        * momentum (Eq. 49) implies, after the point has moved.

@@ -92,11 +92,24 @@ namespace MpmOtm
     load(const CheckpointState &state);
 
   private:
+    /**
+     * v_p += dt sum_i phi_i a_i for every point (MUSL, before its
+     * projection).
+     */
     void
     advance_particle_velocities(const double dt);
 
+    /**
+     * The pass over the points that moves them with the nodal velocities
+     * and updates F and the stress; it also advances the particle
+     * velocities as @p particle_velocity says (in place for
+     * ParticleVelocity::from_acceleration, so that USL reads each point's
+     * functions once per step).
+     */
     void
-    update_particles(const double dt, const bool velocity_from_displacement);
+    update_particles(
+      const double                                      dt,
+      const typename NodalUpdate<dim>::ParticleVelocity particle_velocity);
 
     MaterialPoints<dim>        &material_points;
     const ShapeFunctions<dim>  &shape_functions;
