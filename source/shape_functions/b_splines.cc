@@ -481,6 +481,15 @@ namespace MpmOtm
 
 
   template <int dim>
+  typename ShapeFunctions<dim>::MovingGrid
+  BSplines<dim>::moving_grid() const
+  {
+    return ShapeFunctions<dim>::MovingGrid::knots;
+  }
+
+
+
+  template <int dim>
   types::global_dof_index
   BSplines<dim>::vertex_function(
     const typename Triangulation<dim>::active_cell_iterator &,

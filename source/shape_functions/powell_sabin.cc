@@ -826,6 +826,27 @@ namespace MpmOtm
 
 
   template <int dim>
+  typename ShapeFunctions<dim>::MovingGrid
+  PowellSabin<dim>::moving_grid() const
+  {
+    return ShapeFunctions<dim>::MovingGrid::not_supported;
+  }
+
+
+
+  template <int dim>
+  std::string
+  PowellSabin<dim>::moving_grid_limitation() const
+  {
+    return "Shape functions = Powell-Sabin run with Method = MPM (Update "
+           "scheme = USL or MUSL): their three functions per vertex do not "
+           "move with the vertices, which OTM and the unified approach need "
+           "(a moving triangulation is future work).";
+  }
+
+
+
+  template <int dim>
   unsigned int
   PowellSabin<dim>::functions_per_node() const
   {

@@ -2,11 +2,7 @@
 // read_dimension(). setup.cc builds the run, simulator.cc runs it.
 
 
-#include <mpm_otm/algorithms/advected_grid.h>
-#include <mpm_otm/algorithms/advected_knots.h>
-#include <mpm_otm/algorithms/fixed_grid.h>
-#include <mpm_otm/algorithms/nodal_update.h>
-#include <mpm_otm/algorithms/optimal_transportation_update.h>
+#include <mpm_otm/algorithms/method.h>
 #include <mpm_otm/base/plugins.h>
 #include <mpm_otm/boundary_conditions/boundary_conditions.h>
 #include <mpm_otm/grid/background_grid.h>
@@ -18,7 +14,6 @@
 #include <mpm_otm/materials/material_library.h>
 #include <mpm_otm/problems/body.h>
 #include <mpm_otm/problems/problem.h>
-#include <mpm_otm/shape_functions/b_splines.h>
 #include <mpm_otm/shape_functions/shape_functions.h>
 #include <mpm_otm/simulator/simulator.h>
 
@@ -64,20 +59,12 @@ namespace MpmOtm
                         PluginRegistry<Problem<dim>>::selection()),
                       "Benchmark or user problem:" +
                         PluginRegistry<Problem<dim>>::documentation());
-    prm.declare_entry(
-      "Method",
-      "MPM",
-      Patterns::Selection("MPM|OTM|Unified"),
-      "MPM: material-point method, shape functions on the fixed background "
-      "grid (journal Alg. 1; nodal update from 'Update scheme'). "
-      "OTM: optimal transportation meshfree method (journal Alg. 2): the "
-      "grid's vertices move with the material every step, nodal update of "
-      "Eq. 51, particle velocities from the displacements; needs linearly "
-      "complete shape functions. "
-      "Unified: the unified approach (journal Alg. 3): the grid moves as in "
-      "OTM, the particle update is that of 'Update scheme'; the journal uses "
-      "it with Mass matrix = consistent. OTM and Unified mesh only the "
-      "material domain.");
+    prm.declare_entry("Method",
+                      "MPM",
+                      Patterns::Selection(
+                        PluginRegistry<Method<dim>>::selection()),
+                      "Method:" + PluginRegistry<Method<dim>>::documentation() +
+                        ". OTM and Unified mesh only the material domain.");
     prm.declare_entry(
       "Update scheme",
       "automatic",
@@ -182,62 +169,13 @@ namespace MpmOtm
     shape_functions =
       PluginRegistry<ShapeFunctions<dim>>::create(prm.get("Shape functions"));
     shape_functions->parse_parameters(prm);
-    const std::string method = prm.get("Method");
-    AssertThrow(method == "MPM" || prm.get("Shape functions") != "Powell-Sabin",
-                ExcMessage("Shape functions = Powell-Sabin run with Method = "
-                           "MPM (Update scheme = USL or MUSL): their three "
-                           "functions per vertex do not move with the "
-                           "vertices, which OTM and the unified approach "
-                           "need (a moving triangulation is future work)."));
-    std::string update_scheme = prm.get("Update scheme");
-    if (update_scheme == "automatic")
-      update_scheme = (method == "MPM") ? "MUSL" : "USL";
-    if (method == "OTM")
-      {
-        AssertThrow(prm.get("Update scheme") == "automatic",
-                    ExcMessage("Update scheme = " + prm.get("Update scheme") +
-                               " applies to Method = MPM or Unified; OTM has "
-                               "its own nodal update (journal Eq. 51). Remove "
-                               "the entry."));
-        AssertThrow(shape_functions->is_linearly_complete(),
-                    ExcMessage(
-                      "Method = OTM needs linearly complete shape "
-                      "functions (journal Eq. 47); Shape functions = " +
-                      prm.get("Shape functions") +
-                      (prm.get("Shape functions") == "B-spline" ?
-                         " of degree " + prm.get("B-spline degree") :
-                         std::string()) +
-                      " are not. Use Method = MPM or Unified, or "
-                      "linearly complete functions (B-spline degree = 1)."));
-        nodal_update = std::make_unique<OptimalTransportationUpdate<dim>>();
-        if (prm.get("Mass matrix") != "consistent")
-          pcout << "Note: OTM with Mass matrix = " << prm.get("Mass matrix")
-                << " smooths the particle velocities (journal Eq. 57) "
-                << "every step and is dissipative; Alg. 2 uses the "
-                << "consistent mass matrix (Eq. 48)." << std::endl;
-      }
-    else
-      nodal_update = PluginRegistry<NodalUpdate<dim>>::create(update_scheme);
+    const auto method = PluginRegistry<Method<dim>>::create(prm.get("Method"));
+    method->parse_parameters(prm);
+    nodal_update = method->create_nodal_update();
     nodal_update->parse_parameters(prm);
-    if (method == "MPM")
-      grid_motion = std::make_unique<FixedGrid<dim>>();
-    else if (auto *splines =
-               dynamic_cast<BSplines<dim> *>(shape_functions.get()))
-      {
-        // Knots move with direction-averaged velocities in 2D and 3D while
-        // OTM moves the points with the full field (Alg. 2 needs points
-        // that keep their place in the moving discretisation).
-        AssertThrow(method == "Unified" || dim == 1,
-                    ExcMessage("Method = OTM with Shape functions = B-spline "
-                               "runs in 1D only: in 2D and 3D the knots move "
-                               "per direction with averaged velocities, which "
-                               "is the unified approach (Method = Unified), "
-                               "not OTM. Use Method = Unified, or linear "
-                               "functions for OTM."));
-        grid_motion = std::make_unique<AdvectedKnots<dim>>(*splines);
-      }
-    else
-      grid_motion = std::make_unique<AdvectedGrid<dim>>();
+    grid_motion = method->create_grid_motion(*shape_functions);
+    if (!method->note().empty())
+      pcout << method->note() << std::endl;
     mass_matrix =
       PluginRegistry<MassMatrix<dim>>::create(prm.get("Mass matrix"));
     mass_matrix->parse_parameters(prm);
@@ -279,7 +217,7 @@ namespace MpmOtm
     checkpoint->parse_parameters(prm);
     boundary_conditions = std::make_unique<BoundaryConditions<dim>>();
     boundary_conditions->parse_parameters(prm);
-    AssertThrow(boundary_conditions->empty() || method == "MPM",
+    AssertThrow(boundary_conditions->empty() || method->fixed_grid(),
                 ExcMessage("Boundaries: the boundary conditions of the entry "
                            "'Boundaries' act on the nodes of a fixed grid and "
                            "need Method = MPM; OTM and Unified move the grid "

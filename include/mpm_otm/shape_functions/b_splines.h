@@ -85,6 +85,12 @@ namespace MpmOtm
     is_linearly_complete() const override;
 
     /**
+     * MovingGrid::knots: the knots move per direction (AdvectedKnots).
+     */
+    typename ShapeFunctions<dim>::MovingGrid
+    moving_grid() const override;
+
+    /**
      * The (p+1)^dim functions of @p cell, local function
      * a_0 + (p+1) (a_1 + (p+1) a_2) first.
      */

@@ -137,6 +137,16 @@ namespace MpmOtm
     is_linearly_complete() const override;
 
     /**
+     * MovingGrid::not_supported (yet): the functions would have to be
+     * rebuilt on the moved triangulation every step.
+     */
+    typename ShapeFunctions<dim>::MovingGrid
+    moving_grid() const override;
+
+    std::string
+    moving_grid_limitation() const override;
+
+    /**
      * 3: function q of vertex v has the global index 3 i + q (i the vertex's
      * index in the FE_SimplexP(1) numbering).
      */

@@ -10,6 +10,8 @@
 #include <mpm_otm/base/checkpoint_state.h>
 #include <mpm_otm/shape_functions/particle_shape_data.h>
 
+#include <string>
+
 namespace MpmOtm
 {
   using namespace dealii;
@@ -96,6 +98,48 @@ namespace MpmOtm
      */
     virtual bool
     is_linearly_complete() const = 0;
+
+    /**
+     * How the functions follow the material when the grid moves with it
+     * (OTM and the unified approach, journal Algs. 2 and 3).
+     */
+    enum class MovingGrid
+    {
+      /**
+       * One function per vertex, which moves with it (vertex_function()).
+       */
+      vertices,
+      /**
+       * Tensor-product functions whose knots move per direction with the
+       * direction-averaged velocities (B-splines).
+       */
+      knots,
+      /**
+       * The functions cannot follow a moving grid;
+       * moving_grid_limitation() says why.
+       */
+      not_supported
+    };
+
+    /**
+     * How the functions follow a moving grid; MovingGrid::vertices unless a
+     * family says otherwise.
+     */
+    virtual MovingGrid
+    moving_grid() const
+    {
+      return MovingGrid::vertices;
+    }
+
+    /**
+     * For MovingGrid::not_supported: why, and what to use instead, for the
+     * message of a run that asks for a moving grid.
+     */
+    virtual std::string
+    moving_grid_limitation() const
+    {
+      return {};
+    }
 
     /**
      * Number of functions that belong to one node and share its support:
