@@ -1,4 +1,3 @@
-#include <deal.II/base/data_out_base.h>
 #include <deal.II/base/utilities.h>
 
 #include <mpm_otm/base/collective_error.h>
@@ -10,7 +9,6 @@
 #include <mpm_otm/io/particle_patches.h>
 #include <mpm_otm/material_points/material_points.h>
 #include <mpm_otm/materials/material_library.h>
-#include <mpm_otm/shape_functions/powell_sabin.h>
 #include <mpm_otm/shape_functions/shape_functions.h>
 
 #include <algorithm>
@@ -439,152 +437,29 @@ namespace MpmOtm
 
 
 
-  namespace
-  {
-    /**
-     * The Powell-Sabin refinement of the cells around the vertex of
-     * @p splines nearest to @p near (and of their neighbours), each
-     * sub-triangle divided into @p n x @p n triangles, with the values of
-     * that vertex's three functions.
-     */
-    std::vector<DataOutBase::Patch<2, 2>>
-    powell_sabin_basis_patches(const PowellSabin<2> &splines,
-                               const Point<2>       &near,
-                               const unsigned int    n)
-    {
-      const Triangulation<2> &triangulation =
-        splines.dof_handler().get_triangulation();
-      const auto        &vertices = triangulation.get_vertices();
-      const unsigned int chosen =
-        std::distance(vertices.begin(),
-                      std::min_element(vertices.begin(),
-                                       vertices.end(),
-                                       [&](const Point<2> &a,
-                                           const Point<2> &b) {
-                                         return a.distance_square(near) <
-                                                b.distance_square(near);
-                                       }));
-
-      // The chosen vertex's cells (its functions' support) and their
-      // neighbours through a vertex.
-      std::vector<bool> near_support(vertices.size(), false);
-      for (const auto &cell : triangulation.active_cell_iterators())
-        for (const unsigned int v : cell->vertex_indices())
-          if (cell->vertex_index(v) == chosen)
-            for (const unsigned int w : cell->vertex_indices())
-              near_support[cell->vertex_index(w)] = true;
-
-      std::vector<DataOutBase::Patch<2, 2>>                      patches;
-      std::array<double, PowellSabin<2>::n_cell_functions>       values;
-      std::array<Tensor<1, 2>, PowellSabin<2>::n_cell_functions> gradients;
-      for (const auto &cell : triangulation.active_cell_iterators())
-        {
-          bool shown = false;
-          for (const unsigned int v : cell->vertex_indices())
-            shown = shown || near_support[cell->vertex_index(v)];
-          if (!shown)
-            continue;
-          // Local number of the chosen vertex in the cell, if any.
-          unsigned int local = numbers::invalid_unsigned_int;
-          for (const unsigned int v : cell->vertex_indices())
-            if (cell->vertex_index(v) == chosen)
-              local = v;
-
-          // Reference coordinates of a real point of the cell.
-          Tensor<2, 2> jacobian;
-          for (unsigned int d = 0; d < 2; ++d)
-            for (unsigned int e = 0; e < 2; ++e)
-              jacobian[d][e] = cell->vertex(e + 1)[d] - cell->vertex(0)[d];
-          const Tensor<2, 2> inverse = invert(jacobian);
-
-          const Point<2> incentre = splines.split_point(cell, 3);
-          for (unsigned int k = 0; k < 3; ++k)
-            {
-              // The sub-triangles (V_k, R_k, Z) and (V_k, Z, R_{k-1}).
-              const Point<2> corner = cell->vertex(k);
-              const Point<2> next   = splines.split_point(cell, k);
-              const Point<2> before = splines.split_point(cell, (k + 2) % 3);
-              for (const auto &[b, c] : {std::make_pair(next, incentre),
-                                         std::make_pair(incentre, before)})
-                for (unsigned int i = 0; i < n; ++i)
-                  for (unsigned int j = 0; i + j < n; ++j)
-                    for (unsigned int upper = 0;
-                         upper < (i + j + 1 < n ? 2 : 1);
-                         ++upper)
-                      {
-                        // Lattice triangle (i, j) of the sub-triangle,
-                        // pointing up, or the one pointing down next to it.
-                        const std::array<std::array<unsigned int, 2>, 3> ij =
-                          upper == 0 ?
-                            std::array<std::array<unsigned int, 2>, 3>{
-                              {{{i, j}}, {{i + 1, j}}, {{i, j + 1}}}} :
-                            std::array<std::array<unsigned int, 2>, 3>{
-                              {{{i + 1, j}}, {{i + 1, j + 1}}, {{i, j + 1}}}};
-                        DataOutBase::Patch<2, 2> patch;
-                        patch.reference_cell = ReferenceCells::Triangle;
-                        patch.n_subdivisions = 1;
-                        patch.data.reinit(3, 3);
-                        for (unsigned int p = 0; p < 3; ++p)
-                          {
-                            const Point<2> x =
-                              corner + (double(ij[p][0]) / n) * (b - corner) +
-                              (double(ij[p][1]) / n) * (c - corner);
-                            patch.vertices[p] = x;
-                            if (local == numbers::invalid_unsigned_int)
-                              continue;
-                            const Point<2> xi(inverse * (x - cell->vertex(0)));
-                            splines.cell_values(cell,
-                                                xi,
-                                                values.data(),
-                                                gradients.data());
-                            for (unsigned int q = 0; q < 3; ++q)
-                              patch.data(q, p) = values[3 * local + q];
-                          }
-                        patch.patch_index = patches.size();
-                        patches.push_back(std::move(patch));
-                      }
-            }
-        }
-      return patches;
-    }
-  } // namespace
-
-
-
   template <int dim>
   void
-  OutputWriter<dim>::write_powell_sabin_basis(
+  OutputWriter<dim>::write_basis_picture(
     const ShapeFunctions<dim> &shape_functions) const
   {
     if (powell_sabin_basis_point.empty())
       return;
-    const auto *splines =
-      dynamic_cast<const PowellSabin<dim> *>(&shape_functions);
-    AssertThrow(splines != nullptr,
+    AssertThrow(shape_functions.has_basis_picture(),
                 ExcMessage("Output/Powell-Sabin basis at needs Shape "
                            "functions = Powell-Sabin; remove the entry or "
                            "change the shape functions."));
     AssertThrow(powell_sabin_basis_point.size() == dim,
                 ExcMessage("Output/Powell-Sabin basis at needs a point with " +
                            std::to_string(dim) + " coordinates."));
-    if constexpr (dim == 2)
-      if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
-        {
-          const auto patches =
-            powell_sabin_basis_patches(*splines,
-                                       Point<2>(powell_sabin_basis_point[0],
-                                                powell_sabin_basis_point[1]),
-                                       6);
-          std::ofstream file(output_directory + "/powell-sabin-basis.vtu");
-          DataOutBase::write_vtu(patches,
-                                 {"phi_0", "phi_1", "phi_2"},
-                                 {},
-                                 DataOutBase::VtkFlags(),
-                                 file);
-          AssertThrow(file.good(),
-                      ExcMessage("Cannot write <" + output_directory +
-                                 "/powell-sabin-basis.vtu>."));
-        }
+    if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+      {
+        Point<dim> point;
+        for (unsigned int d = 0; d < dim; ++d)
+          point[d] = powell_sabin_basis_point[d];
+        shape_functions.write_basis_picture(point,
+                                            output_directory +
+                                              "/powell-sabin-basis.vtu");
+      }
   }
 
 

@@ -209,7 +209,7 @@ namespace MpmOtm
     if (resume)
       output->load(*resumed_state);
     else
-      output->write_powell_sabin_basis(*shape_functions);
+      output->write_basis_picture(*shape_functions);
 
     pcout << "mpm-otm: " << dim << "D, "
           << grid->triangulation().n_global_active_cells() << " cells, "

@@ -121,15 +121,13 @@ namespace MpmOtm
     directory() const;
 
     /**
-     * If Output/Powell-Sabin basis at names a point: write the three
-     * Powell-Sabin functions of the vertex nearest to it on the
-     * Powell-Sabin refinement of its cells and their neighbours
-     * (powell-sabin-basis.vtu), each of the six sub-triangles of a cell
-     * divided into 36 triangles. Stops unless @p shape_functions are
-     * Powell-Sabin splines.
+     * If Output/Powell-Sabin basis at names a point: write the family's
+     * picture of its functions near it (ShapeFunctions::write_basis_picture(),
+     * powell-sabin-basis.vtu) on the first rank. Stops on every rank unless
+     * @p shape_functions draw one (Powell-Sabin splines).
      */
     void
-    write_powell_sabin_basis(const ShapeFunctions<dim> &shape_functions) const;
+    write_basis_picture(const ShapeFunctions<dim> &shape_functions) const;
 
   private:
     void

@@ -147,6 +147,23 @@ namespace MpmOtm
     moving_grid_limitation() const override;
 
     /**
+     * True: write_basis_picture() draws the three functions of a vertex.
+     */
+    bool
+    has_basis_picture() const override;
+
+    /**
+     * Write the three functions of the vertex nearest to @p point on the
+     * Powell-Sabin refinement of its cells and their neighbours as the VTU
+     * file @p file_name (phi_0, phi_1, phi_2), each of the six
+     * sub-triangles of a cell divided into 36 triangles. 2D only (the
+     * family is).
+     */
+    void
+    write_basis_picture(const Point<dim>  &point,
+                        const std::string &file_name) const override;
+
+    /**
      * 3: function q of vertex v has the global index 3 i + q (i the vertex's
      * index in the FE_SimplexP(1) numbering).
      */

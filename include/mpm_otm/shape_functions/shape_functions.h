@@ -142,6 +142,26 @@ namespace MpmOtm
     }
 
     /**
+     * Whether the family draws a picture of its functions
+     * (write_basis_picture()); false unless a family says otherwise.
+     */
+    virtual bool
+    has_basis_picture() const
+    {
+      return false;
+    }
+
+    /**
+     * For families with has_basis_picture(): write a picture of the
+     * functions near @p point as the VTU file @p file_name. Not collective.
+     */
+    virtual void
+    write_basis_picture(const Point<dim> &, const std::string &) const
+    {
+      Assert(false, ExcNotImplemented());
+    }
+
+    /**
      * Number of functions that belong to one node and share its support:
      * functions n k, ..., n k + n - 1 (global indices) are node k's and have
      * one owner. They are strongly coupled in the mass matrix, and the
