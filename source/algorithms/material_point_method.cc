@@ -12,22 +12,9 @@ namespace MpmOtm
 
 
   template <int dim>
-  void
-  MaterialPointMethod<dim>::parse_parameters(ParameterHandler &prm)
-  {
-    update_scheme = prm.get("Update scheme");
-    if (update_scheme == "automatic")
-      update_scheme = "MUSL";
-  }
-
-
-
-  template <int dim>
-  std::unique_ptr<NodalUpdate<dim>>
-  MaterialPointMethod<dim>::create_nodal_update() const
-  {
-    return PluginRegistry<NodalUpdate<dim>>::create(update_scheme);
-  }
+  MaterialPointMethod<dim>::MaterialPointMethod()
+    : UpdateSchemeMethod<dim>("MUSL")
+  {}
 
 
 

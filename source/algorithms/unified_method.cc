@@ -12,22 +12,9 @@ namespace MpmOtm
 
 
   template <int dim>
-  void
-  UnifiedMethod<dim>::parse_parameters(ParameterHandler &prm)
-  {
-    update_scheme = prm.get("Update scheme");
-    if (update_scheme == "automatic")
-      update_scheme = "USL";
-  }
-
-
-
-  template <int dim>
-  std::unique_ptr<NodalUpdate<dim>>
-  UnifiedMethod<dim>::create_nodal_update() const
-  {
-    return PluginRegistry<NodalUpdate<dim>>::create(update_scheme);
-  }
+  UnifiedMethod<dim>::UnifiedMethod()
+    : UpdateSchemeMethod<dim>("USL")
+  {}
 
 
 

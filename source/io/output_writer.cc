@@ -1,6 +1,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <mpm_otm/base/collective_error.h>
+#include <mpm_otm/base/exception_message.h>
 #include <mpm_otm/grid/background_grid.h>
 #include <mpm_otm/grid_system/nodal_system.h>
 #include <mpm_otm/io/grid_patches.h>
@@ -451,15 +452,23 @@ namespace MpmOtm
     AssertThrow(powell_sabin_basis_point.size() == dim,
                 ExcMessage("Output/Powell-Sabin basis at needs a point with " +
                            std::to_string(dim) + " coordinates."));
+    // The first rank draws the picture; a failure there stops every rank.
+    std::string problem;
     if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
-      {
-        Point<dim> point;
-        for (unsigned int d = 0; d < dim; ++d)
-          point[d] = powell_sabin_basis_point[d];
-        shape_functions.write_basis_picture(point,
-                                            output_directory +
-                                              "/powell-sabin-basis.vtu");
-      }
+      try
+        {
+          Point<dim> point;
+          for (unsigned int d = 0; d < dim; ++d)
+            point[d] = powell_sabin_basis_point[d];
+          shape_functions.write_basis_picture(point,
+                                              output_directory +
+                                                "/powell-sabin-basis.vtu");
+        }
+      catch (const std::exception &error)
+        {
+          problem = message_of(error);
+        }
+    stop_if_any_rank_failed(mpi_communicator, problem, "", "");
   }
 
 

@@ -1,7 +1,7 @@
 #ifndef mpm_otm_algorithms_unified_method_h
 #define mpm_otm_algorithms_unified_method_h
 
-#include <mpm_otm/algorithms/method.h>
+#include <mpm_otm/algorithms/update_scheme_method.h>
 
 namespace MpmOtm
 {
@@ -11,26 +11,19 @@ namespace MpmOtm
    * that of 'Update scheme' (automatic: USL).
    */
   template <int dim>
-  class UnifiedMethod : public Method<dim>
+  class UnifiedMethod : public UpdateSchemeMethod<dim>
   {
   public:
+    UnifiedMethod();
+
     static void
     declare_parameters(ParameterHandler &prm);
-
-    void
-    parse_parameters(ParameterHandler &prm) override;
-
-    std::unique_ptr<NodalUpdate<dim>>
-    create_nodal_update() const override;
 
     std::unique_ptr<GridMotion<dim>>
     create_grid_motion(ShapeFunctions<dim> &shape_functions) const override;
 
     bool
     fixed_grid() const override;
-
-  private:
-    std::string update_scheme;
   };
 } // namespace MpmOtm
 
