@@ -5,6 +5,7 @@
 #include <mpm_otm/shape_functions/shape_functions.h>
 
 #include <limits>
+#include <map>
 #include <sstream>
 
 namespace MpmOtm
@@ -115,6 +116,7 @@ namespace MpmOtm
     vertices_per_cell = grid.triangulation().begin_active()->n_vertices();
 
     triangulation                                  = &grid.triangulation();
+    background                                     = &grid;
     const Utilities::MPI::Partitioner &partitioner = system.partitioner();
     std::vector<unsigned int> position_of_vertex(triangulation->n_vertices(),
                                                  numbers::invalid_unsigned_int);
@@ -289,7 +291,8 @@ namespace MpmOtm
   unsigned int
   AdvectedGrid<dim>::vertex_index(const unsigned int k) const
   {
-    return vertex_positions[k] - triangulation->get_vertices().data();
+    return background->coarse_vertex_index(
+      vertex_positions[k] - triangulation->get_vertices().data());
   }
 
 
@@ -298,8 +301,7 @@ namespace MpmOtm
   void
   AdvectedGrid<dim>::save(CheckpointState &state) const
   {
-    // This rank's vertices with their indices in the triangulation, which
-    // are the same on every rank (the grid is a coarse mesh).
+    // This rank's vertices with their numbers in the coarse mesh.
     std::vector<double> vertices;
     vertices.reserve(vertex_positions.size() * (dim + 1));
     for (unsigned int k = 0; k < vertex_positions.size(); ++k)
@@ -317,26 +319,22 @@ namespace MpmOtm
   void
   AdvectedGrid<dim>::load(const CheckpointState &state)
   {
-    std::vector<Point<dim>> saved(triangulation->n_vertices());
-    std::vector<bool>       found(triangulation->n_vertices(), false);
+    std::map<unsigned int, Point<dim>> saved;
     for (const auto &part : state.parts("moving grid/vertices"))
       for (unsigned int k = 0; k + dim < part.size(); k += dim + 1)
         {
-          const auto index = static_cast<unsigned int>(part[k]);
-          AssertThrow(index < saved.size(),
-                      ExcMessage("The checkpoint's grid has more vertices "
-                                 "than this run's."));
+          Point<dim> &position = saved[static_cast<unsigned int>(part[k])];
           for (unsigned int d = 0; d < dim; ++d)
-            saved[index][d] = part[k + 1 + d];
-          found[index] = true;
+            position[d] = part[k + 1 + d];
         }
     for (unsigned int k = 0; k < vertex_positions.size(); ++k)
       {
         const unsigned int index = vertex_index(k);
-        AssertThrow(found[index],
+        const auto         found = saved.find(index);
+        AssertThrow(found != saved.end(),
                     ExcMessage("The checkpoint lacks vertex " +
                                std::to_string(index) + " of the moving grid."));
-        *vertex_positions[k] = saved[index];
+        *vertex_positions[k] = found->second;
       }
     triangulation->signals.mesh_movement();
   }

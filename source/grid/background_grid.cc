@@ -1,4 +1,5 @@
 #include <deal.II/base/utilities.h>
+#include <deal.II/distributed/fully_distributed_tria.h>
 #include <deal.II/distributed/tria.h>
 #include <deal.II/fe/fe_simplex_p.h>
 #include <deal.II/fe/mapping_cartesian.h>
@@ -6,6 +7,7 @@
 #include <deal.II/fe/mapping_q.h>
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_tools.h>
+#include <deal.II/grid/tria_description.h>
 
 #include <mpm_otm/base/collective_error.h>
 #include <mpm_otm/base/node_memory.h>
@@ -166,18 +168,14 @@ namespace MpmOtm
         return;
       }
     check_memory(communicator);
-    const bool distributed = (dim > 1 && !simplex);
-    if (distributed)
+    AssertThrow(dim > 1 || Utilities::MPI::n_mpi_processes(communicator) == 1,
+                ExcMessage("1D grids run on one MPI rank; run without "
+                           "mpirun."));
+    if (dim > 1 && !simplex)
       tria = std::make_unique<parallel::distributed::Triangulation<dim>>(
         communicator);
     else
-      {
-        AssertThrow(Utilities::MPI::n_mpi_processes(communicator) == 1,
-                    ExcMessage("1D and simplex grids run on one MPI rank; "
-                               "run without mpirun or use Mesh/Cell type = "
-                               "hypercube in 2D or 3D."));
-        tria = std::make_unique<Triangulation<dim>>();
-      }
+      tria = std::make_unique<Triangulation<dim>>();
 
     if (!simplex)
       {
@@ -204,6 +202,8 @@ namespace MpmOtm
         map = std::make_unique<MappingFE<dim>>(FE_SimplexP<dim>(1));
       }
     set_boundary_ids();
+    if (simplex)
+      distribute(communicator);
   }
 
 
@@ -218,17 +218,7 @@ namespace MpmOtm
           tria = std::make_unique<parallel::distributed::Triangulation<dim>>(
             communicator);
         else
-          {
-            AssertThrow(Utilities::MPI::n_mpi_processes(communicator) == 1,
-                        ExcMessage(
-                          "Mesh/Mesh file: <" + file + "> holds " +
-                          (dim == 2 ? "triangles" : "tetrahedra") +
-                          ", and simplex grids run on one MPI rank; run "
-                          "without mpirun, or mesh with " +
-                          (dim == 2 ? "quadrilaterals" : "hexahedra") +
-                          " (which run in parallel)."));
-            tria = std::make_unique<Triangulation<dim>>();
-          }
+          tria = std::make_unique<Triangulation<dim>>();
         check_memory(communicator);
         gmsh->read(*tria);
         if (simplex)
@@ -252,12 +242,54 @@ namespace MpmOtm
                 upper[d] = std::max(upper[d], tria->get_vertices()[v][d]);
               }
         bounding_box = BoundingBox<dim>(std::make_pair(lower, upper));
+        if (simplex)
+          distribute(communicator);
       }
     else
       {
         (void)communicator;
         AssertThrow(false, ExcInternalError());
       }
+  }
+
+
+
+  template <int dim>
+  void
+  BackgroundGrid<dim>::distribute(const MPI_Comm communicator)
+  {
+    const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(communicator);
+    if (n_ranks == 1)
+      return;
+    // Every rank partitions the same coarse mesh with METIS, so all agree
+    // on the owners without communication.
+    const std::unique_ptr<Triangulation<dim>> serial = std::move(tria);
+    GridTools::partition_triangulation(n_ranks, *serial);
+    auto distributed =
+      std::make_unique<parallel::fullydistributed::Triangulation<dim>>(
+        communicator);
+    distributed->create_triangulation(
+      TriangulationDescription::Utilities::
+        create_description_from_triangulation(*serial, communicator));
+
+    coarse_vertex.assign(distributed->n_vertices(),
+                         numbers::invalid_unsigned_int);
+    for (const auto &cell : distributed->active_cell_iterators())
+      {
+        const auto coarse_cell = serial->create_cell_iterator(cell->id());
+        for (const unsigned int v : cell->vertex_indices())
+          coarse_vertex[cell->vertex_index(v)] = coarse_cell->vertex_index(v);
+      }
+    tria = std::move(distributed);
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  BackgroundGrid<dim>::coarse_vertex_index(const unsigned int vertex) const
+  {
+    return coarse_vertex.empty() ? vertex : coarse_vertex[vertex];
   }
 
 

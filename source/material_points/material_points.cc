@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <map>
 #include <sstream>
 
 namespace MpmOtm
@@ -109,7 +110,11 @@ namespace MpmOtm
   MaterialPoints<dim>::locate_on_simplices()
   {
     // deal.II 9.4's own sorting uses a quadrilateral inside test and puts
-    // points into wrong triangles, and so does its Cache search with a hint.
+    // points into wrong triangles, and so does its Cache search with a hint:
+    // points are located with find_simplex() and sent to their new rank
+    // here. A point moves at most into a cell next to its own in one step,
+    // which is an own or a ghost cell; points that moved further are
+    // searched for on every rank.
     struct Moved
     {
       Point<dim>                                        location;
@@ -121,36 +126,73 @@ namespace MpmOtm
     std::vector<Moved> moved;
     std::vector<typename Particles::ParticleHandler<dim>::particle_iterator>
       to_remove;
+    // Points for other ranks, each as its cell, id, location and properties,
+    // and points in no cell of this rank, each as id, location, properties.
+    const unsigned int cell_size = std::tuple_size<CellId::binary_type>::value;
+    const unsigned int point_size =
+      1 + dim + particles->n_properties_per_particle();
+    std::map<unsigned int, std::vector<double>> leaving;
+    std::vector<double>                         unfound;
+    const auto location_of = [](const double *packed) {
+      Point<dim> location;
+      for (unsigned int d = 0; d < dim; ++d)
+        location[d] = packed[1 + d];
+      return location;
+    };
+    const auto pack =
+      [&](const typename Particles::ParticleHandler<dim>::particle_iterator
+                              &particle,
+          std::vector<double> &buffer) {
+        buffer.push_back(particle->get_id());
+        for (unsigned int d = 0; d < dim; ++d)
+          buffer.push_back(particle->get_location()[d]);
+        const auto properties = particle->get_properties();
+        buffer.insert(buffer.end(), properties.begin(), properties.end());
+      };
 
     for (auto particle = particles->begin(); particle != particles->end();
          ++particle)
       {
         const auto       cell     = particle->get_surrounding_cell();
         const Point<dim> location = particle->get_location();
-        const auto       found    = find_simplex<dim>(*cache, location, cell);
+        auto             found    = find_simplex<dim>(*cache, location, cell);
         if (found.first == cell)
           {
             particle->set_reference_location(found.second);
             continue;
           }
-        if (found.first.state() != IteratorState::valid)
-          {
-            lost_points.emplace_back(particle->get_id(), location);
-            to_remove.push_back(particle);
-            continue;
-          }
-        const auto properties = particle->get_properties();
-        moved.push_back(
-          {location,
-           found.second,
-           particle->get_id(),
-           found.first,
-           std::vector<double>(properties.begin(), properties.end())});
+        found = owning_simplex<dim>(*cache, location, found.first);
         to_remove.push_back(particle);
+        if (found.first.state() != IteratorState::valid)
+          pack(particle, unfound);
+        else if (found.first->is_locally_owned())
+          {
+            const auto properties = particle->get_properties();
+            moved.push_back(
+              {location,
+               found.second,
+               particle->get_id(),
+               found.first,
+               std::vector<double>(properties.begin(), properties.end())});
+          }
+        else
+          {
+            std::vector<double> &buffer = leaving[found.first->subdomain_id()];
+            const auto binary = found.first->id().template to_binary<dim>();
+            buffer.insert(buffer.end(), binary.begin(), binary.end());
+            pack(particle, buffer);
+          }
       }
-    // Every rank updates the global numbers (a collective call) if a point
-    // moved on any rank.
-    if (Utilities::MPI::max(to_remove.empty() ? 0u : 1u, communicator()) == 0)
+
+    // One collective check per step: did a point change cell on any rank,
+    // and is any point in no cell of its rank?
+    const std::array<unsigned int, 2> local = {
+      {to_remove.empty() ? 0u : 1u, unfound.empty() ? 0u : 1u}};
+    std::array<unsigned int, 2> global{};
+    Utilities::MPI::max(ArrayView<const unsigned int>(local.data(), 2),
+                        communicator(),
+                        ArrayView<unsigned int>(global.data(), 2));
+    if (global[0] == 0)
       return;
     particles->remove_particles(to_remove);
     for (const auto &point : moved)
@@ -159,6 +201,75 @@ namespace MpmOtm
                                  point.id,
                                  point.cell,
                                  ArrayView<const double>(point.properties));
+
+    const auto insert =
+      [&](const double                                            *packed,
+          const typename Triangulation<dim>::active_cell_iterator &cell,
+          const Point<dim>                                        &reference) {
+        particles->insert_particle(
+          location_of(packed),
+          reference,
+          static_cast<types::particle_index>(packed[0]),
+          cell,
+          ArrayView<const double>(packed + 1 + dim, point_size - 1 - dim));
+      };
+    if (Utilities::MPI::n_mpi_processes(communicator()) > 1)
+      {
+        for (const auto &[rank, buffer] :
+             Utilities::MPI::some_to_some(communicator(), leaving))
+          for (std::size_t k = 0; k < buffer.size();
+               k += cell_size + point_size)
+            {
+              CellId::binary_type binary;
+              for (unsigned int i = 0; i < cell_size; ++i)
+                binary[i] = static_cast<unsigned int>(buffer[k + i]);
+              const typename Triangulation<dim>::active_cell_iterator cell(
+                grid->triangulation().create_cell_iterator(CellId(binary)));
+              const double *packed = &buffer[k + cell_size];
+              insert(
+                packed,
+                cell,
+                find_simplex<dim>(*cache, location_of(packed), cell).second);
+            }
+      }
+
+    // Points in no cell of their rank: the rank that owns their cell (by
+    // the rule of owning_simplex(), so that only one takes a point on the
+    // boundary between ranks) takes them; the others have left the grid.
+    std::vector<unsigned int> taken;
+    if (global[1] > 0)
+      {
+        const auto all = Utilities::MPI::all_gather(communicator(), unfound);
+        for (const auto &part : all)
+          for (std::size_t k = 0; k < part.size(); k += point_size)
+            {
+              const Point<dim> location = location_of(&part[k]);
+              const auto       found    = owning_simplex<dim>(
+                *cache,
+                location,
+                find_simplex<dim>(
+                  *cache,
+                  location,
+                  typename Triangulation<dim>::active_cell_iterator())
+                  .first);
+              const bool mine = found.first.state() == IteratorState::valid &&
+                                found.first->is_locally_owned();
+              if (mine)
+                insert(&part[k], found.first, found.second);
+              taken.push_back(mine ? 1 : 0);
+            }
+        Utilities::MPI::sum(taken, communicator(), taken);
+        std::size_t        first_own = 0;
+        const unsigned int rank =
+          Utilities::MPI::this_mpi_process(communicator());
+        for (unsigned int r = 0; r < rank; ++r)
+          first_own += all[r].size() / point_size;
+        for (std::size_t k = 0; k < unfound.size(); k += point_size)
+          if (taken[first_own + k / point_size] == 0)
+            lost_points.emplace_back(static_cast<types::particle_index>(
+                                       unfound[k]),
+                                     location_of(&unfound[k]));
+      }
     particles->update_cached_numbers();
   }
 

@@ -7,6 +7,7 @@
 #include <array>
 #include <cstdint>
 #include <fstream>
+#include <map>
 
 // The material points in the files of a checkpoint (MaterialPoints::
 // write_points() and read_points()).
@@ -53,6 +54,12 @@ namespace MpmOtm
     std::uint64_t       n_saved = 0;
     std::string         problem;
     const Triangulation<dim> &triangulation = grid->triangulation();
+    // This rank's cells by id: a fully distributed triangulation does not
+    // hold the cells of the other ranks.
+    std::map<CellId, typename Triangulation<dim>::active_cell_iterator> owned;
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+        owned.emplace(cell->id(), cell);
     for (const auto &file_name : files)
       {
         std::ifstream                file(file_name, std::ios::binary);
@@ -90,14 +97,13 @@ namespace MpmOtm
                           "the grid of this run does not have. ";
                 break;
               }
-            const auto found = triangulation.create_cell_iterator(cell_id);
-            if (found->is_active() && found->is_locally_owned())
-              particles->insert_particle(
-                x,
-                xi,
-                id,
-                typename Triangulation<dim>::active_cell_iterator(found),
-                ArrayView<const double>(properties));
+            const auto found = owned.find(cell_id);
+            if (found != owned.end())
+              particles->insert_particle(x,
+                                         xi,
+                                         id,
+                                         found->second,
+                                         ArrayView<const double>(properties));
           }
         if (problem.empty() && !file)
           problem = "<" + file_name + "> ends before its last point. ";

@@ -190,25 +190,41 @@ namespace MpmOtm
       }
     else
       {
+        // The blocks with a cell of this rank (on one rank: all), in order.
         const unsigned int n_blocks =
           std::accumulate(blocks.begin(),
                           blocks.end(),
                           1u,
                           std::multiplies<unsigned int>());
+        std::vector<bool> block_has_owned_cell(n_blocks, false);
+        for (const auto &cell : grid->triangulation().active_cell_iterators())
+          if (cell->is_locally_owned())
+            {
+              const Point<dim> centre = cell->center();
+              unsigned int     linear = 0;
+              for (unsigned int d = dim; d-- > 0;)
+                linear = linear * blocks[d] +
+                         std::min(blocks[d] - 1,
+                                  static_cast<unsigned int>(std::floor(
+                                    (centre[d] - lower[d]) /
+                                    (grid->box().side_length(d) / blocks[d]))));
+              block_has_owned_cell[linear] = true;
+            }
         for (unsigned int linear = 0; linear < n_blocks; ++linear)
-          {
-            unsigned int rest = linear;
-            for (unsigned int d = 0; d < dim; ++d)
-              {
-                block[d] = rest % blocks[d];
-                rest /= blocks[d];
-              }
-            insert_points_of_block(
-              block,
-              typename Triangulation<dim>::active_cell_iterator(),
-              materials,
-              problem);
-          }
+          if (block_has_owned_cell[linear])
+            {
+              unsigned int rest = linear;
+              for (unsigned int d = 0; d < dim; ++d)
+                {
+                  block[d] = rest % blocks[d];
+                  rest /= blocks[d];
+                }
+              insert_points_of_block(
+                block,
+                typename Triangulation<dim>::active_cell_iterator(),
+                materials,
+                problem);
+            }
       }
     particles->update_cached_numbers();
 
@@ -275,21 +291,23 @@ namespace MpmOtm
                       n_per_direction.end(),
                       std::uint64_t(1),
                       std::multiplies<std::uint64_t>());
-    // The seeded cells: blocks of a box grid (of simplices: all, on one
-    // rank), else the locally owned cells.
+    // The seeded cells: blocks of a box grid (of simplices: an equal share
+    // of all blocks per rank), else the locally owned cells.
     const std::vector<unsigned int> blocks =
       box ? grid->subdivisions() : std::vector<unsigned int>();
     std::vector<typename Triangulation<dim>::active_cell_iterator> cells;
     for (const auto &cell : grid->triangulation().active_cell_iterators())
       if (cell->is_locally_owned() && !(box && simplex))
         cells.push_back(cell);
-    const double n_cells   = (box && simplex) ?
-                               std::accumulate(blocks.begin(),
+    const double n_cells = (box && simplex) ?
+                             std::accumulate(blocks.begin(),
                                              blocks.end(),
                                              1.,
                                              std::multiplies<double>()) :
-                               cells.size();
-    const double n_pattern = n_cells * pattern_per_cell;
+                             cells.size();
+    const double n_pattern =
+      n_cells * pattern_per_cell /
+      ((box && simplex) ? Utilities::MPI::n_mpi_processes(communicator()) : 1);
 
     // If the whole pattern could not fit, estimate the fraction of it that
     // lies in the bodies from pattern points drawn at random (counting them
@@ -505,10 +523,12 @@ namespace MpmOtm
                                    materials,
                                    problem,
                                    properties);
+              // Numbered by the cell of the coarse mesh, so that the
+              // numbers do not depend on the number of ranks.
               particles->insert_particle(X,
                                          reference[q],
                                          static_cast<types::particle_index>(
-                                           cell->global_active_cell_index()) *
+                                           cell->id().get_coarse_cell_id()) *
                                              n_pattern +
                                            q,
                                          cell,
@@ -558,6 +578,26 @@ namespace MpmOtm
         Point<dim> X;
         for (unsigned int d = 0; d < dim; ++d)
           X[d] = block_lower[d] + reference[d] * block_size[d];
+
+        // On hypercube grids the block is the cell and the reference
+        // coordinates are those within the block. Of the simplices of a
+        // block, a point belongs to the rank that owns it.
+        typename Triangulation<dim>::active_cell_iterator cell = block_cell;
+        if (grid->is_simplex())
+          {
+            const auto found =
+              owning_simplex<dim>(*cache,
+                                  X,
+                                  find_simplex<dim>(*cache, X, hint).first);
+            AssertThrow(found.first.state() == IteratorState::valid,
+                        ExcInternalError());
+            hint = found.first;
+            if (!found.first->is_locally_owned())
+              continue;
+            cell      = found.first;
+            reference = found.second;
+          }
+
         const unsigned int body = problem.body_containing(X);
         if (body == numbers::invalid_unsigned_int)
           {
@@ -565,19 +605,6 @@ namespace MpmOtm
             continue;
           }
         ++points_per_body[body];
-
-        // On hypercube grids the block is the cell and the reference
-        // coordinates are those within the block.
-        typename Triangulation<dim>::active_cell_iterator cell = block_cell;
-        if (grid->is_simplex())
-          {
-            const auto found = find_simplex<dim>(*cache, X, hint);
-            AssertThrow(found.first.state() == IteratorState::valid,
-                        ExcInternalError());
-            cell      = found.first;
-            reference = found.second;
-            hint      = cell;
-          }
 
         set_point_properties(X, body, volume, materials, problem, properties);
         // Boundary particles (thesis Sect. 2.4.1): the outermost layer next

@@ -88,6 +88,31 @@ namespace MpmOtm
 
 
 
+  template <int dim>
+  std::pair<typename Triangulation<dim>::active_cell_iterator, Point<dim>>
+  owning_simplex(const GridTools::Cache<dim, dim>                        &cache,
+                 const Point<dim>                                        &point,
+                 const typename Triangulation<dim>::active_cell_iterator &found)
+  {
+    std::pair<typename Triangulation<dim>::active_cell_iterator, Point<dim>>
+      owning(found, Point<dim>());
+    if (found.state() != IteratorState::valid)
+      return owning;
+    owning.second               = barycentric<dim>(found, point);
+    const auto &vertex_to_cells = cache.get_vertex_to_cell_map();
+    for (const unsigned int v : found->vertex_indices())
+      for (const auto &neighbour : vertex_to_cells[found->vertex_index(v)])
+        if (neighbour->id() < owning.first->id())
+          {
+            const Point<dim> xi = barycentric<dim>(neighbour, point);
+            if (inside_simplex(xi))
+              owning = {neighbour, xi};
+          }
+    return owning;
+  }
+
+
+
   template std::pair<Triangulation<1>::active_cell_iterator, Point<1>>
   find_simplex(const GridTools::Cache<1, 1> &,
                const Point<1> &,
@@ -100,4 +125,16 @@ namespace MpmOtm
   find_simplex(const GridTools::Cache<3, 3> &,
                const Point<3> &,
                const Triangulation<3>::active_cell_iterator &);
+  template std::pair<Triangulation<1>::active_cell_iterator, Point<1>>
+  owning_simplex(const GridTools::Cache<1, 1> &,
+                 const Point<1> &,
+                 const Triangulation<1>::active_cell_iterator &);
+  template std::pair<Triangulation<2>::active_cell_iterator, Point<2>>
+  owning_simplex(const GridTools::Cache<2, 2> &,
+                 const Point<2> &,
+                 const Triangulation<2>::active_cell_iterator &);
+  template std::pair<Triangulation<3>::active_cell_iterator, Point<3>>
+  owning_simplex(const GridTools::Cache<3, 3> &,
+                 const Point<3> &,
+                 const Triangulation<3>::active_cell_iterator &);
 } // namespace MpmOtm

@@ -281,6 +281,11 @@ namespace MpmOtm
                 ExcMessage("Shape functions = Powell-Sabin need Mesh/Cell "
                            "type = simplex (triangles), or a Mesh/Mesh file "
                            "of triangles."));
+    AssertThrow(Utilities::MPI::n_mpi_processes(
+                  grid.triangulation().get_communicator()) == 1,
+                ExcMessage("Shape functions = Powell-Sabin run on one MPI "
+                           "rank only so far: their set-up needs the whole "
+                           "triangulation. Run without mpirun."));
     initialize(grid.triangulation());
   }
 

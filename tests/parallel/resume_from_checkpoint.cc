@@ -15,8 +15,9 @@
 // Mohr-Coulomb under a footing with a prescribed velocity; G2, a friction
 // wall), the unified approach with quadratic B-splines and a consistent
 // mass (B3), OTM with max-ent functions (B1b), MPM with Powell-Sabin
-// splines (B5) and a 3D block. On two ranks: G3 and the 3D block on two
-// ranks, and G3 and OTM (B3) from one rank to two and from two to one.
+// splines (B5) and a 3D block. On two ranks: G3, the 3D block and OTM (B3)
+// on triangles on two ranks, and G3 and OTM (B3, on quadrilaterals and on
+// triangles) from one rank to two and from two to one.
 
 #include <mpm_otm/material_points/material_points.h>
 
@@ -236,6 +237,14 @@ main(int argc, char **argv)
       test<2>("B3-OTM", "B3-plate-manufactured-otm.prm", b3, 10, single, world);
       test<2>("B3-OTM", "B3-plate-manufactured-otm.prm", b3, 10, world, single);
       test<3>("block-3d", "", block_3d, 7, world, world);
+      // A fully distributed grid of triangles, whose ranks number their
+      // vertices each in their own way.
+      const std::string b3_simplex =
+        b3 + "subsection Mesh\n set Cell type = simplex\nend\n";
+      const std::string b3_otm = "B3-plate-manufactured-otm.prm";
+      test<2>("B3-OTM-simplex", b3_otm, b3_simplex, 10, world, world);
+      test<2>("B3-OTM-simplex", b3_otm, b3_simplex, 10, single, world);
+      test<2>("B3-OTM-simplex", b3_otm, b3_simplex, 10, world, single);
       if (single != MPI_COMM_NULL)
         MPI_Comm_free(&single);
     }

@@ -1,10 +1,11 @@
-// Parallel runs on a p4est-distributed grid with two MPI ranks give the
-// serial result: the 2D bar of B5 on quadrilaterals and a 3D bar on
-// hexahedra, with MPM and with the moving grid of OTM (2D) and the unified
-// approach (3D), and with quadratic B-splines (BSMPM in 2D and 3D, the
-// unified approach with moving knots in 2D), each run once on MPI_COMM_WORLD (2
-// ranks) and once on rank 0 alone; the error norms against the exact solution
-// and the energies agree to round-off, and the errors are small.
+// Parallel runs with two MPI ranks give the serial result: the 2D bar of B5
+// on quadrilaterals and a 3D bar on hexahedra (p4est-distributed grids),
+// with MPM and with the moving grid of OTM (2D) and the unified approach
+// (3D), with quadratic B-splines (BSMPM in 2D and 3D, the unified approach
+// with moving knots in 2D), and on triangles (MPM, OTM) and tetrahedra
+// (MPM) of a fully distributed grid. Each runs once on MPI_COMM_WORLD (2
+// ranks) and once on rank 0 alone; the error norms against the exact
+// solution and the energies agree to round-off, and the errors are small.
 
 #include "../tests.h"
 
@@ -105,4 +106,13 @@ end
   compare<2>("2D Unified B-spline",
              common + bar_2d + splines + "set Method = Unified\n");
   compare<3>("3D BSMPM", common + bar_3d + splines);
+  // Triangles and tetrahedra: a fully distributed grid partitioned by
+  // METIS.
+  const std::string simplices =
+    "subsection Mesh\n  set Cell type = simplex\nend\n";
+  compare<2>("2D simplex", common + bar_2d + simplices);
+  compare<2>("2D simplex OTM",
+             common + bar_2d + simplices +
+               "set Method = OTM\nset Update scheme = automatic\n");
+  compare<3>("3D simplex", common + bar_3d + simplices);
 }

@@ -87,7 +87,8 @@ namespace MpmOtm
             const std::array<unsigned int, GeometryInfo<dim>::vertices_per_face>
               &vertices) const;
 
-    Triangulation<dim> *triangulation = nullptr;
+    Triangulation<dim>        *triangulation = nullptr;
+    const BackgroundGrid<dim> *background    = nullptr;
 
     /**
      * c dt: the smallest stable distance between two vertices of a cell.
@@ -95,7 +96,8 @@ namespace MpmOtm
     double stable_size = 0.;
 
     /**
-     * The index in the triangulation of vertex_positions[k].
+     * The number in the coarse mesh, the same on every rank, of the vertex
+     * of vertex_positions[k].
      */
     unsigned int
     vertex_index(const unsigned int k) const;

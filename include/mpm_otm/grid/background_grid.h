@@ -32,7 +32,10 @@ namespace MpmOtm
    * (2D) or surfaces (3D), 0 where a face has none.
    *
    * Quadrilateral and hexahedral grids in 2D and 3D are p4est-distributed
-   * (a file's cells are p4est's trees); 1D and simplex grids are serial.
+   * (a file's cells are p4est's trees). Simplex grids on more than one MPI
+   * rank are parallel::fullydistributed: every rank builds the coarse mesh,
+   * METIS partitions it, and each rank keeps its cells and one layer of
+   * ghost cells. 1D grids are serial.
    */
   class GmshFile;
 
@@ -133,6 +136,15 @@ namespace MpmOtm
     std::vector<types::boundary_id>
     boundary_ids() const;
 
+    /**
+     * The number in the coarse mesh (the same on every rank) of the vertex
+     * with index @p vertex in this rank's triangulation. The two differ only
+     * on a fully distributed triangulation, which numbers its vertices per
+     * rank.
+     */
+    unsigned int
+    coarse_vertex_index(const unsigned int vertex) const;
+
   private:
     /**
      * Build the triangulation and mapping of the Mesh file.
@@ -155,6 +167,13 @@ namespace MpmOtm
     void
     set_boundary_ids();
 
+    /**
+     * On more than one rank, replace the serial triangulation of a simplex
+     * grid (filled, with boundary ids) by a fully distributed one.
+     */
+    void
+    distribute(const MPI_Comm communicator);
+
     std::string                         file;
     std::unique_ptr<GmshFile>           gmsh;
     bool                                simplex = false;
@@ -162,6 +181,10 @@ namespace MpmOtm
     std::vector<unsigned int>           blocks;
     std::unique_ptr<Triangulation<dim>> tria;
     std::unique_ptr<Mapping<dim>>       map;
+    /**
+     * coarse_vertex_index() of every vertex; empty where they agree.
+     */
+    std::vector<unsigned int> coarse_vertex;
   };
 } // namespace MpmOtm
 

@@ -1,6 +1,7 @@
-// Quadrilateral and hexahedral meshes of Gmsh files (tests/meshes/) run on
-// two MPI ranks: p4est takes the file's cells as its trees and both ranks
-// own cells. The material filling the mesh has the mass density x measure
+// Meshes of Gmsh files (tests/meshes/) run on two MPI ranks: p4est takes
+// the cells of quadrilateral and hexahedral meshes as its trees, METIS
+// partitions triangles and tetrahedra (a fully distributed grid), and both
+// ranks own cells. The material filling the mesh has the mass density x measure
 // (the trapezoid: 2 x 6; the two parallelepipeds: 2 x 2), every boundary id
 // of the file is found (0, 1, 2), and a ball translated rigidly with v0
 // (no forces, MPM USL, lumped mass) is at X + v0 t after every step to
@@ -127,4 +128,12 @@ main(int argc, char **argv)
           2.,
           "  set Centre = 1.15, 0.7, 0.5\n  set Radius = 0.3\n",
           "2; 0; 0");
+  test<2>("trapezoid-triangles.msh",
+          6.,
+          "  set Centre = 2, 1\n  set Radius = 0.6\n",
+          "2; 3");
+  test<3>("cube-tetrahedra.msh",
+          1.,
+          "  set Centre = 0.65, 0.6, 0.5\n  set Radius = 0.25\n",
+          "1; 0; 0");
 }

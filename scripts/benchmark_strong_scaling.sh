@@ -1,0 +1,56 @@
+#!/usr/bin/env bash
+# Strong scaling on this machine: the 2D bar of prm/performance-bar-2d.prm
+# (USL, lumped mass, 100 steps) with about 1e6 material points, on 1 and 2
+# MPI ranks, for linear functions on quadrilaterals (p4est) and on
+# triangles (a fully distributed grid partitioned by METIS) and quadratic
+# B-splines. Runs alternate between 1 and 2 ranks, REPEAT times each (the
+# machine is shared: compare runs of one series only). Prints a Markdown
+# table with the seconds of the time loop (from the run's own wall-time
+# lines, so set-up and output are excluded) and the speed-up.
+# Usage: scripts/benchmark_strong_scaling.sh [path to mpm-otm] [REPEAT]
+set -euo pipefail
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+exe=${1:-$root/build-release/mpm-otm}
+repeat=${2:-2}
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cd "$work"
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+
+# run RANKS NX NY EXTRA: prints "points seconds_of_time_loop"
+run() {
+  cp "$root/prm/performance-bar-2d.prm" run.prm
+  printf 'subsection Mesh\n set Subdivisions = %s, %s\nend\n%b\n' "$2" "$3" "$4" >> run.prm
+  mpirun -np "$1" "$exe" --overwrite run.prm > log 2>&1
+  points=$(grep -o '[0-9]* material points' log | head -1 | cut -d' ' -f1)
+  t0=$(grep '^step  *0 ' log | sed 's/.*wall time = \([0-9.]*\) s.*/\1/')
+  t1=$(grep '^step  *100 ' log | sed 's/.*wall time = \([0-9.]*\) s.*/\1/')
+  echo "$points $(awk "BEGIN{print $t1 - $t0}")"
+}
+
+echo "| functions and grid | material points | 1 rank (s) | 2 ranks (s) | speed-up |"
+echo "|---|---|---|---|---|"
+while IFS='|' read -r label nx ny extra; do
+  one="" two=""
+  for _ in $(seq "$repeat"); do
+    read -r points seconds < <(run 1 "$nx" "$ny" "$extra")
+    one="$one $seconds"
+    read -r points seconds < <(run 2 "$nx" "$ny" "$extra")
+    two="$two $seconds"
+  done
+  awk -v label="$label" -v p="$points" -v one="$one" -v two="$two" 'BEGIN {
+    n = split(one, a, " "); split(two, b, " ")
+    best1 = a[1]; best2 = b[1]; s1 = a[1]; s2 = b[1]
+    for (i = 2; i <= n; ++i) {
+      if (a[i] < best1) best1 = a[i]; if (b[i] < best2) best2 = b[i]
+      s1 = s1 ", " a[i]; s2 = s2 ", " b[i]
+    }
+    printf "| %s | %d | %s | %s | %.2f |\n", label, p, s1, s2, best1 / best2
+  }'
+done <<'EOF'
+linear, quadrilaterals|1000|250|
+linear, triangles|1000|250|subsection Mesh\n set Cell type = simplex\nend
+quadratic B-splines, quadrilaterals|1000|250|set Shape functions = B-spline
+EOF
+echo
+echo "(speed-up: best 1-rank time over best 2-rank time)"
