@@ -21,7 +21,7 @@ export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 run() {
   cp "$root/prm/performance-bar-2d.prm" run.prm
   printf 'subsection Mesh\n set Subdivisions = %s, %s\nend\n%b\n' "$2" "$3" "$4" >> run.prm
-  mpirun -np "$1" "$exe" --overwrite run.prm > log 2>&1
+  mpirun -np "$1" "$exe" --overwrite run.prm < /dev/null > log 2>&1
   points=$(grep -o '[0-9]* material points' log | head -1 | cut -d' ' -f1)
   t0=$(grep '^step  *0 ' log | sed 's/.*wall time = \([0-9.]*\) s.*/\1/')
   t1=$(grep '^step  *100 ' log | sed 's/.*wall time = \([0-9.]*\) s.*/\1/')

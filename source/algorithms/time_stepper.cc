@@ -115,8 +115,15 @@ namespace MpmOtm
       TimerOutput::Scope scope(timer, "move grid, locate particles");
       grid_motion.advance(system, material_points, dt);
     }
-    work_supplied += std::max(system.external_work(dt), 0.) +
-                     boundary_conditions.take_work_of_prescribed_velocities();
+    // The positive part of the step's work on all ranks together, held by
+    // the first rank, so that the sum over the ranks does not depend on
+    // their number.
+    const MPI_Comm communicator = system.lumped_mass.get_mpi_communicator();
+    const double   external_work =
+      Utilities::MPI::sum(system.external_work(dt), communicator);
+    if (Utilities::MPI::this_mpi_process(communicator) == 0)
+      work_supplied += std::max(external_work, 0.);
+    work_supplied += boundary_conditions.take_work_of_prescribed_velocities();
     previous_dt = dt;
   }
 

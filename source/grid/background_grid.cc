@@ -272,6 +272,9 @@ namespace MpmOtm
       TriangulationDescription::Utilities::
         create_description_from_triangulation(*serial, communicator));
 
+    // The faces between the ghost layer and the cells a rank does not hold
+    // are boundary faces of its triangulation, with boundary id 0: they get
+    // an id of their own, which no condition names.
     coarse_vertex.assign(distributed->n_vertices(),
                          numbers::invalid_unsigned_int);
     for (const auto &cell : distributed->active_cell_iterators())
@@ -279,6 +282,10 @@ namespace MpmOtm
         const auto coarse_cell = serial->create_cell_iterator(cell->id());
         for (const unsigned int v : cell->vertex_indices())
           coarse_vertex[cell->vertex_index(v)] = coarse_cell->vertex_index(v);
+        for (const unsigned int f : cell->face_indices())
+          if (cell->face(f)->at_boundary() &&
+              !coarse_cell->face(f)->at_boundary())
+            cell->face(f)->set_boundary_id(ghost_layer_boundary_id);
       }
     tria = std::move(distributed);
   }

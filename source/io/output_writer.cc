@@ -1,7 +1,6 @@
 #include <deal.II/base/utilities.h>
 
 #include <mpm_otm/base/collective_error.h>
-#include <mpm_otm/base/exception_message.h>
 #include <mpm_otm/grid/background_grid.h>
 #include <mpm_otm/grid_system/nodal_system.h>
 #include <mpm_otm/io/grid_patches.h>
@@ -91,7 +90,8 @@ namespace MpmOtm
       "A point (x, y): write powell-sabin-basis.vtu at the start with the "
       "three Powell-Sabin functions of the grid vertex nearest to it, on the "
       "Powell-Sabin refinement of the cells around it and their neighbours "
-      "(Shape functions = Powell-Sabin only). Empty: not written.");
+      "(Shape functions = Powell-Sabin only, serial runs only). Empty: not "
+      "written.");
     prm.leave_subsection();
   }
 
@@ -452,23 +452,17 @@ namespace MpmOtm
     AssertThrow(powell_sabin_basis_point.size() == dim,
                 ExcMessage("Output/Powell-Sabin basis at needs a point with " +
                            std::to_string(dim) + " coordinates."));
-    // The first rank draws the picture; a failure there stops every rank.
-    std::string problem;
-    if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
-      try
-        {
-          Point<dim> point;
-          for (unsigned int d = 0; d < dim; ++d)
-            point[d] = powell_sabin_basis_point[d];
-          shape_functions.write_basis_picture(point,
-                                              output_directory +
-                                                "/powell-sabin-basis.vtu");
-        }
-      catch (const std::exception &error)
-        {
-          problem = message_of(error);
-        }
-    stop_if_any_rank_failed(mpi_communicator, problem, "", "");
+    AssertThrow(Utilities::MPI::n_mpi_processes(mpi_communicator) == 1,
+                ExcMessage("Output/Powell-Sabin basis at: the picture is "
+                           "drawn in serial runs only (on more than one MPI "
+                           "rank no rank holds the whole triangulation); run "
+                           "without mpirun, or remove the entry."));
+    Point<dim> point;
+    for (unsigned int d = 0; d < dim; ++d)
+      point[d] = powell_sabin_basis_point[d];
+    shape_functions.write_basis_picture(point,
+                                        output_directory +
+                                          "/powell-sabin-basis.vtu");
   }
 
 

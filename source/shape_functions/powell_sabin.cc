@@ -281,11 +281,6 @@ namespace MpmOtm
                 ExcMessage("Shape functions = Powell-Sabin need Mesh/Cell "
                            "type = simplex (triangles), or a Mesh/Mesh file "
                            "of triangles."));
-    AssertThrow(Utilities::MPI::n_mpi_processes(
-                  grid.triangulation().get_communicator()) == 1,
-                ExcMessage("Shape functions = Powell-Sabin run on one MPI "
-                           "rank only so far: their set-up needs the whole "
-                           "triangulation. Run without mpirun."));
     initialize(grid.triangulation());
   }
 
@@ -725,6 +720,14 @@ namespace MpmOtm
                              const Point<2> &,
                              const Tensor<1, 2> &)> &action) const
   {
+    // The vertices of this rank's cells, whose control triangles are
+    // complete: all cells around them are its own or ghost cells.
+    const auto       &triangulation = vertex_dofs.get_triangulation();
+    std::vector<bool> of_own_cell(triangulation.n_vertices(), false);
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const unsigned int v : cell->vertex_indices())
+          of_own_cell[cell->vertex_index(v)] = true;
     for (const auto &cell : vertex_dofs.active_cell_iterators())
       if (!cell->is_artificial())
         for (const auto f : cell->face_indices())
@@ -736,7 +739,9 @@ namespace MpmOtm
                 (face->vertex(1) - face->vertex(0)) / face->measure();
               for (unsigned int i = 0; i < 2; ++i)
                 {
-                  const unsigned int            v = face->vertex_index(i);
+                  const unsigned int v = face->vertex_index(i);
+                  if (!of_own_cell[v])
+                    continue;
                   const types::global_dof_index dof =
                     face->vertex_dof_index(i, 0);
                   unsigned int on_line = 0;

@@ -2,10 +2,11 @@
 // on quadrilaterals and a 3D bar on hexahedra (p4est-distributed grids),
 // with MPM and with the moving grid of OTM (2D) and the unified approach
 // (3D), with quadratic B-splines (BSMPM in 2D and 3D, the unified approach
-// with moving knots in 2D), and on triangles (MPM, OTM) and tetrahedra
-// (MPM) of a fully distributed grid. Each runs once on MPI_COMM_WORLD (2
-// ranks) and once on rank 0 alone; the error norms against the exact
-// solution and the energies agree to round-off, and the errors are small.
+// with moving knots in 2D), and on triangles (MPM, OTM, and MPM with
+// Powell-Sabin splines) and tetrahedra (MPM) of a fully distributed grid. Each
+// runs once on MPI_COMM_WORLD (2 ranks) and once on rank 0 alone; the error
+// norms against the exact solution and the energies agree to round-off, and the
+// errors are small.
 
 #include "../tests.h"
 
@@ -115,4 +116,9 @@ end
              common + bar_2d + simplices +
                "set Method = OTM\nset Update scheme = automatic\n");
   compare<3>("3D simplex", common + bar_3d + simplices);
+  // Powell-Sabin splines: each rank builds the functions of its cells'
+  // vertices from its own and its ghost cells.
+  compare<2>("2D Powell-Sabin",
+             common + bar_2d + simplices +
+               "set Shape functions = Powell-Sabin\n");
 }

@@ -70,9 +70,11 @@ namespace MpmOtm
     advance(const double time, const double dt);
 
     /**
-     * The work done on this rank's points and nodes by gravity, body
-     * forces, tractions and prescribed velocities since the start (the
-     * positive part of each step's work), for the EnergyMonitor.
+     * This rank's share of the work done by gravity, body forces, tractions
+     * and prescribed velocities since the start, for the EnergyMonitor: the
+     * work of its prescribed velocities, and on the first rank the positive
+     * part of each step's work of the loads on all points and nodes (so the
+     * sum over the ranks does not depend on their number).
      */
     double
     supplied_work() const;

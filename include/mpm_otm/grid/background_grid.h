@@ -137,6 +137,15 @@ namespace MpmOtm
     boundary_ids() const;
 
     /**
+     * The boundary id of the faces between a rank's ghost cells and the
+     * cells it does not hold on a fully distributed triangulation (deal.II
+     * gives them boundary id 0), so that no condition on a side applies to
+     * them.
+     */
+    static constexpr types::boundary_id ghost_layer_boundary_id =
+      numbers::internal_face_boundary_id - 1;
+
+    /**
      * The number in the coarse mesh (the same on every rank) of the vertex
      * with index @p vertex in this rank's triangulation. The two differ only
      * on a fully distributed triangulation, which numbers its vertices per
