@@ -168,9 +168,6 @@ namespace MpmOtm
         return;
       }
     check_memory(communicator);
-    AssertThrow(dim > 1 || Utilities::MPI::n_mpi_processes(communicator) == 1,
-                ExcMessage("1D grids run on one MPI rank; run without "
-                           "mpirun."));
     if (dim > 1 && !simplex)
       tria = std::make_unique<parallel::distributed::Triangulation<dim>>(
         communicator);
@@ -202,7 +199,7 @@ namespace MpmOtm
         map = std::make_unique<MappingFE<dim>>(FE_SimplexP<dim>(1));
       }
     set_boundary_ids();
-    if (simplex)
+    if (simplex || dim == 1)
       distribute(communicator);
   }
 

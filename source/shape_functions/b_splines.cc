@@ -109,7 +109,8 @@ namespace MpmOtm
     triangulation = &grid.triangulation();
 
     // The distinct knots of direction d are the distinct vertex
-    // coordinates; the cells must form a tensor-product grid.
+    // coordinates on all ranks (a fully distributed 1D grid holds only its
+    // own part); the cells must form a tensor-product grid.
     const auto  &vertices = triangulation->get_vertices();
     const auto  &used     = triangulation->get_used_vertices();
     const double tolerance =
@@ -122,6 +123,15 @@ namespace MpmOtm
         for (unsigned int v = 0; v < vertices.size(); ++v)
           if (used[v])
             coordinates.push_back(vertices[v][d]);
+        std::sort(coordinates.begin(), coordinates.end());
+        coordinates.erase(std::unique(coordinates.begin(), coordinates.end()),
+                          coordinates.end());
+        const auto parts =
+          Utilities::MPI::all_gather(triangulation->get_communicator(),
+                                     coordinates);
+        coordinates.clear();
+        for (const auto &part : parts)
+          coordinates.insert(coordinates.end(), part.begin(), part.end());
         std::sort(coordinates.begin(), coordinates.end());
         knots[d].clear();
         for (const double x : coordinates)

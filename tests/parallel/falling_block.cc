@@ -5,10 +5,11 @@
 // calls in every step (the run used to hang in the point location), and
 // every point must follow the discrete free fall of MPM (USL, lumped mass,
 // no stress): v_n = n g dt, x_n = X + g dt^2 n (n + 1) / 2, to round-off.
-// Linear functions in 2D and 3D, quadratic B-splines in 2D. On triangles
-// and tetrahedra (a fully distributed grid, partitioned by METIS, so the
-// block need not start on one rank) every point also lies in its cell, with
-// barycentric coordinates in [0, 1], and some points change rank.
+// Linear functions in 1D, 2D and 3D, quadratic B-splines in 1D and 2D. In
+// 1D and on triangles and tetrahedra (fully distributed grids, partitioned
+// by METIS, so the block need not start on one rank) some points change
+// rank, and on simplices every point also lies in its cell, with
+// barycentric coordinates in [0, 1].
 
 #include <mpm_otm/grid/background_grid.h>
 #include <mpm_otm/material_points/material_points.h>
@@ -32,10 +33,15 @@ test(const std::string &shape_functions,
   // starts; it falls 0.2 in 0.2 s, into the lower half. METIS cuts a grid
   // of simplices along a jagged line somewhere through its middle: there
   // the block spans the grid's width and falls from its upper to its lower
-  // half.
+  // half. A 1D grid is cut by METIS too, into two halves.
   std::string lower = "0", upper = "1", blocks = std::to_string(cells),
-              body_lower = simplex ? "0.125" : "0.1",
-              body_upper = simplex ? "0.875" : "0.4", gravity = "0";
+              body_lower = dim == 1 ? "0.6" :
+                           simplex  ? "0.125" :
+                                      "0.1",
+              body_upper = dim == 1 ? "0.85" :
+                           simplex  ? "0.875" :
+                                      "0.4",
+              gravity    = dim == 1 ? "-10" : "0";
   for (unsigned int d = 1; d < dim; ++d)
     {
       lower += ", 0";
@@ -127,7 +133,7 @@ test(const std::string &shape_functions,
       ++changed_rank;
   changed_rank = Utilities::MPI::sum(changed_rank, world);
   check(points.n_global_points() == n_points, label + ": points were lost");
-  if (!simplex)
+  if (!simplex && dim > 1)
     {
       check(Utilities::MPI::sum(on_rank_0 ? n_initial : 0, world) == 0,
             label + ": the block did not start on rank 1 alone");
@@ -141,8 +147,9 @@ test(const std::string &shape_functions,
   check(largest < 1e-12,
         label + ": free-fall error " + std::to_string(largest));
   deallog << label << ": " << n_points << " points fell"
-          << (simplex ? ", some across ranks, each in its simplex," :
-                        " from rank 1 onto rank 0")
+          << (simplex  ? ", some across ranks, each in its simplex," :
+              dim == 1 ? ", some across ranks," :
+                         " from rank 1 onto rank 0")
           << " as the discrete free fall" << std::endl;
 }
 
@@ -156,4 +163,6 @@ main(int argc, char **argv)
   test<3>("linear", 4);
   test<2>("linear", 8, true);
   test<3>("linear", 4, true);
+  test<1>("linear", 16);
+  test<1>("B-spline", 16);
 }

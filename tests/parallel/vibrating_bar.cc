@@ -2,8 +2,9 @@
 // on quadrilaterals and a 3D bar on hexahedra (p4est-distributed grids),
 // with MPM and with the moving grid of OTM (2D) and the unified approach
 // (3D), with quadratic B-splines (BSMPM in 2D and 3D, the unified approach
-// with moving knots in 2D), and on triangles (MPM, OTM, and MPM with
-// Powell-Sabin splines) and tetrahedra (MPM) of a fully distributed grid. Each
+// with moving knots in 2D), and on fully distributed grids: triangles
+// (MPM, OTM, and MPM with Powell-Sabin splines), tetrahedra (MPM) and 1D
+// intervals (MPM, OTM, the unified approach with moving B-spline knots). Each
 // runs once on MPI_COMM_WORLD (2 ranks) and once on rank 0 alone; the error
 // norms against the exact solution and the energies agree to round-off, and the
 // errors are small.
@@ -121,4 +122,22 @@ end
   compare<2>("2D Powell-Sabin",
              common + bar_2d + simplices +
                "set Shape functions = Powell-Sabin\n");
+  // 1D: a fully distributed line of intervals.
+  const std::string bar_1d = R"(
+set Dimension = 1
+subsection Mesh
+  set Lower corner = 0
+  set Upper corner = 25
+  set Subdivisions = 16
+end
+subsection Particles
+  set Particles per cell = 4
+end
+)";
+  compare<1>("1D", common + bar_1d);
+  compare<1>("1D OTM",
+             common + bar_1d +
+               "set Method = OTM\nset Update scheme = automatic\n");
+  compare<1>("1D Unified B-spline",
+             common + bar_1d + splines + "set Method = Unified\n");
 }

@@ -32,10 +32,10 @@ namespace MpmOtm
    * (2D) or surfaces (3D), 0 where a face has none.
    *
    * Quadrilateral and hexahedral grids in 2D and 3D are p4est-distributed
-   * (a file's cells are p4est's trees). Simplex grids on more than one MPI
-   * rank are parallel::fullydistributed: every rank builds the coarse mesh,
-   * METIS partitions it, and each rank keeps its cells and one layer of
-   * ghost cells. 1D grids are serial.
+   * (a file's cells are p4est's trees). Simplex grids and 1D grids on more
+   * than one MPI rank are parallel::fullydistributed: every rank builds the
+   * coarse mesh, METIS partitions it, and each rank keeps its cells and one
+   * layer of ghost cells.
    */
   class GmshFile;
 
@@ -178,7 +178,7 @@ namespace MpmOtm
 
     /**
      * On more than one rank, replace the serial triangulation of a simplex
-     * grid (filled, with boundary ids) by a fully distributed one.
+     * or 1D grid (filled, with boundary ids) by a fully distributed one.
      */
     void
     distribute(const MPI_Comm communicator);
