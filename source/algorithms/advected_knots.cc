@@ -115,9 +115,10 @@ namespace MpmOtm
     vertices.clear();
     knot_of_vertex.clear();
     std::vector<bool> seen(triangulation->n_vertices(), false);
-    // Every rank holds all cells of the box grid and knows every knot, so
-    // it moves all vertices, those of artificial cells included: deal.II's
-    // point search must not see stale positions.
+    // Every rank knows every knot, so it moves all vertices it holds: in
+    // 2D and 3D all cells of the box grid, those of artificial cells
+    // included (deal.II's point search must not see stale positions), in 1D
+    // (fully distributed) its own and its ghost cells.
     for (const auto &cell : triangulation->active_cell_iterators())
       for (const unsigned int v : cell->vertex_indices())
         if (!seen[cell->vertex_index(v)])

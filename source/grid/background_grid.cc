@@ -261,7 +261,25 @@ namespace MpmOtm
     // Every rank partitions the same coarse mesh with METIS, so all agree
     // on the owners without communication.
     const std::unique_ptr<Triangulation<dim>> serial = std::move(tria);
-    GridTools::partition_triangulation(n_ranks, *serial);
+    // Every rank needs cells of its own (deal.II would give a rank without
+    // any a placeholder cell that is not part of the grid).
+    std::vector<unsigned int> cells_of_rank(n_ranks, 0);
+    if (serial->n_active_cells() >= n_ranks)
+      {
+        GridTools::partition_triangulation(n_ranks, *serial);
+        for (const auto &cell : serial->active_cell_iterators())
+          ++cells_of_rank[cell->subdomain_id()];
+      }
+    AssertThrow(std::find(cells_of_rank.begin(), cells_of_rank.end(), 0u) ==
+                  cells_of_rank.end(),
+                ExcMessage(
+                  (gmsh ? "Mesh/Mesh file: the mesh of <" + file + ">" :
+                          std::string("Mesh/Subdivisions: the grid")) +
+                  " has " + std::to_string(serial->n_active_cells()) +
+                  (serial->n_active_cells() == 1 ? " cell" : " cells") +
+                  "; partitioned for " + std::to_string(n_ranks) +
+                  " MPI ranks, it leaves a rank without a cell. Run on "
+                  "fewer ranks or use more cells."));
     auto distributed =
       std::make_unique<parallel::fullydistributed::Triangulation<dim>>(
         communicator);

@@ -41,7 +41,7 @@ namespace MpmOtm
     double gravitational_energy = 0;
     /// Work done on the points since the start by gravity, body forces,
     /// tractions and prescribed velocities (the positive part of each
-    /// step's work on each rank, TimeStepper::supplied_work()); with the
+    /// step's work on all ranks, TimeStepper::supplied_work()); with the
     /// energy at the start, the bound of the EnergyMonitor.
     double supplied_work = 0;
     /// Names of the named boundary conditions.
