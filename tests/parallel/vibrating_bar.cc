@@ -94,11 +94,10 @@ subsection Particles
   set Particles per cell = 3
 end
 )";
+  const std::string otm = "set Method = OTM\nset Update scheme = automatic\n";
   compare<2>("2D", common + bar_2d);
   compare<3>("3D", common + bar_3d);
-  compare<2>("2D OTM",
-             common + bar_2d +
-               "set Method = OTM\nset Update scheme = automatic\n");
+  compare<2>("2D OTM", common + bar_2d + otm);
   compare<3>("3D Unified", common + bar_3d + "set Method = Unified\n");
   // Quadratic B-splines: functions reach over several cells, so the ranks
   // exchange more than the shared vertices; the knots move on every rank.
@@ -113,9 +112,7 @@ end
   const std::string simplices =
     "subsection Mesh\n  set Cell type = simplex\nend\n";
   compare<2>("2D simplex", common + bar_2d + simplices);
-  compare<2>("2D simplex OTM",
-             common + bar_2d + simplices +
-               "set Method = OTM\nset Update scheme = automatic\n");
+  compare<2>("2D simplex OTM", common + bar_2d + simplices + otm);
   compare<3>("3D simplex", common + bar_3d + simplices);
   // Powell-Sabin splines: each rank builds the functions of its cells'
   // vertices from its own and its ghost cells.
@@ -135,9 +132,7 @@ subsection Particles
 end
 )";
   compare<1>("1D", common + bar_1d);
-  compare<1>("1D OTM",
-             common + bar_1d +
-               "set Method = OTM\nset Update scheme = automatic\n");
+  compare<1>("1D OTM", common + bar_1d + otm);
   compare<1>("1D Unified B-spline",
              common + bar_1d + splines + "set Method = Unified\n");
 }
