@@ -1,4 +1,9 @@
 #include <deal.II/base/quadrature_lib.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_simplex_p.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/fe/mapping_fe.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/sparse_direct.h>
@@ -6,9 +11,8 @@
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
 
+#include <mpm_otm/shape_functions/fe_powell_sabin.h>
 #include <mpm_otm/shape_functions/l2_projection.h>
-#include <mpm_otm/shape_functions/linear_lagrange.h>
-#include <mpm_otm/shape_functions/powell_sabin.h>
 
 #include <array>
 #include <cmath>
@@ -95,190 +99,99 @@ namespace MpmOtm
     }
 
     /**
-     * A space as the projection sees it: the functions of a cell, the
-     * triangles (pieces) of the cell on which they are polynomials, and
-     * their values on a piece.
+     * A space as the projection sees it: a finite element on the
+     * triangulation (FE_SimplexP(1) or FE_PowellSabin) and the triangles
+     * (pieces) of a cell on which its functions are polynomials: the cell,
+     * or the six sub-triangles T_{k,half} = (V_k, R_k, Z) / (R_k, V_{k+1},
+     * Z) of the Powell-Sabin refinement.
      */
     class Space
     {
     public:
-      virtual ~Space() = default;
-
-      virtual types::global_dof_index
-      n_functions() const = 0;
-
-      virtual unsigned int
-      n_cell_functions() const = 0;
-
-      virtual void
-      cell_functions(const Cell                           &cell,
-                     std::vector<types::global_dof_index> &functions) const = 0;
-
-      virtual std::vector<std::array<Point<2>, 3>>
-      pieces(const Cell &cell) const = 0;
-
-      /**
-       * Values of the functions of cell_functions() at the point with
-       * reference coordinates @p xi, with the polynomial of piece @p piece.
-       */
-      virtual void
-      values(const Cell        &cell,
-             const unsigned int piece,
-             const Point<2>    &xi,
-             double            *values) const = 0;
-    };
-
-    /**
-     * P1: one function per vertex, numbered as the vertices; one piece, the
-     * cell. Values from LinearLagrange.
-     */
-    class LinearSpace : public Space
-    {
-    public:
-      explicit LinearSpace(const Triangulation<2> &triangulation)
-        : size(triangulation.n_vertices())
-      {}
-
-      types::global_dof_index
-      n_functions() const override
+      Space(const Triangulation<2> &triangulation, const ProjectionSpace type)
       {
-        return size;
-      }
-
-      unsigned int
-      n_cell_functions() const override
-      {
-        return 3;
-      }
-
-      void
-      cell_functions(
-        const Cell                           &cell,
-        std::vector<types::global_dof_index> &functions) const override
-      {
-        functions.resize(3);
-        for (unsigned int k = 0; k < 3; ++k)
-          functions[k] = cell->vertex_index(k);
+        if (type == ProjectionSpace::powell_sabin)
+          {
+            auto splines = std::make_shared<PowellSabinGeometry>();
+            splines->reinit(triangulation);
+            geometry = splines;
+            fe       = std::make_unique<FE_PowellSabin>(splines);
+          }
+        else
+          fe = std::make_unique<FE_SimplexP<2>>(1);
+        dof_handler.reinit(triangulation);
+        dof_handler.distribute_dofs(*fe);
       }
 
       std::vector<std::array<Point<2>, 3>>
-      pieces(const Cell &cell) const override
+      pieces(const Triangulation<2>::cell_iterator &cell) const
       {
-        return {{{cell->vertex(0), cell->vertex(1), cell->vertex(2)}}};
-      }
-
-      void
-      values(const Cell &,
-             const unsigned int,
-             const Point<2> &xi,
-             double         *values) const override
-      {
-        Tensor<1, 2> gradients[3];
-        LinearLagrange<2>::reference_values(true, xi, values, gradients);
-      }
-
-    private:
-      types::global_dof_index size;
-    };
-
-    /**
-     * Quadratic Powell-Sabin splines: nine functions per cell, six pieces
-     * T_{k,half} = (V_k, R_k, Z) / (R_k, V_{k+1}, Z) numbered 2 k + half.
-     */
-    class PowellSabinSpace : public Space
-    {
-    public:
-      explicit PowellSabinSpace(const Triangulation<2> &triangulation)
-      {
-        basis.initialize(triangulation);
-      }
-
-      types::global_dof_index
-      n_functions() const override
-      {
-        return basis.n_functions();
-      }
-
-      unsigned int
-      n_cell_functions() const override
-      {
-        return PowellSabin<2>::n_cell_functions;
-      }
-
-      void
-      cell_functions(
-        const Cell                           &cell,
-        std::vector<types::global_dof_index> &functions) const override
-      {
-        const auto &indices = basis.cell_functions(cell);
-        functions.assign(indices.begin(), indices.end());
-      }
-
-      std::vector<std::array<Point<2>, 3>>
-      pieces(const Cell &cell) const override
-      {
-        const Point<2>                       z = basis.split_point(cell, 3);
+        if (geometry == nullptr)
+          return {{{cell->vertex(0), cell->vertex(1), cell->vertex(2)}}};
+        const Point<2>                       z = geometry->split_point(cell, 3);
         std::vector<std::array<Point<2>, 3>> result;
         for (unsigned int k = 0; k < 3; ++k)
           {
-            const Point<2> r = basis.split_point(cell, k);
+            const Point<2> r = geometry->split_point(cell, k);
             result.push_back({{cell->vertex(k), r, z}});
             result.push_back({{r, cell->vertex((k + 1) % 3), z}});
           }
         return result;
       }
 
-      void
-      values(const Cell        &cell,
-             const unsigned int piece,
-             const Point<2>    &xi,
-             double            *values) const override
-      {
-        Tensor<1, 2> gradients[PowellSabin<2>::n_cell_functions];
-        basis.cell_values(cell, xi, values, gradients, piece);
-      }
-
-    private:
-      PowellSabin<2> basis;
+      std::shared_ptr<const PowellSabinGeometry> geometry;
+      std::unique_ptr<FiniteElement<2>>          fe;
+      DoFHandler<2>                              dof_handler;
     };
 
     /**
-     * Call @p at_point(functions, values, x, weight) for every point x of
+     * Call @p at_point(functions, fe_values, q) for every point q of
      * @p rule on every piece of every cell, with the cell's functions and
-     * their values at x, and @p after_cell(functions) after the last point
+     * their values in @p fe_values (an FEValues object on the cell's
+     * composite rule), and @p after_cell(functions) after the last point
      * of each cell.
      */
     template <typename PointAction, typename CellAction>
     void
-    for_each_point(const Space            &space,
-                   const Triangulation<2> &triangulation,
-                   const Rule             &rule,
-                   const PointAction      &at_point,
-                   const CellAction       &after_cell)
+    for_each_point(const Space       &space,
+                   const Rule        &rule,
+                   const PointAction &at_point,
+                   const CellAction  &after_cell)
     {
-      std::vector<types::global_dof_index> functions;
-      std::vector<double>                  values;
-      for (const auto &cell : triangulation.active_cell_iterators())
+      const MappingFE<2>                   mapping(FE_SimplexP<2>(1));
+      std::vector<types::global_dof_index> functions(
+        space.fe->n_dofs_per_cell());
+      for (const auto &cell : space.dof_handler.active_cell_iterators())
         {
-          space.cell_functions(cell, functions);
-          values.resize(functions.size());
-          const auto pieces = space.pieces(cell);
-          for (unsigned int piece = 0; piece < pieces.size(); ++piece)
+          // The rule on every piece, in the cell's reference coordinates,
+          // with the weights of the reference triangle (area 1/2).
+          const double cell_area = 0.5 * twice_signed_area(cell->vertex(0),
+                                                           cell->vertex(1),
+                                                           cell->vertex(2));
+          std::vector<Point<2>> points;
+          std::vector<double>   weights;
+          for (const auto &t : space.pieces(cell))
             {
-              const auto  &t = pieces[piece];
               const double area =
                 0.5 * std::abs(twice_signed_area(t[0], t[1], t[2]));
               for (unsigned int q = 0; q < rule.points.size(); ++q)
                 {
-                  const auto    &l = rule.points[q];
-                  const Point<2> x = l[0] * t[0] + l[1] * t[1] + l[2] * t[2];
-                  space.values(cell,
-                               piece,
-                               reference_point(cell, x),
-                               values.data());
-                  at_point(functions, values, x, rule.weights[q] * area);
+                  const auto &l = rule.points[q];
+                  points.push_back(
+                    reference_point(cell,
+                                    l[0] * t[0] + l[1] * t[1] + l[2] * t[2]));
+                  weights.push_back(rule.weights[q] * area / (2. * cell_area));
                 }
             }
+          FEValues<2> fe_values(mapping,
+                                *space.fe,
+                                Quadrature<2>(points, weights),
+                                update_values | update_JxW_values |
+                                  update_quadrature_points);
+          fe_values.reinit(cell);
+          cell->get_dof_indices(functions);
+          for (unsigned int q = 0; q < points.size(); ++q)
+            at_point(functions, fe_values, q);
           after_cell(functions);
         }
     }
@@ -343,45 +256,34 @@ namespace MpmOtm
     AssertThrow(triangulation.all_reference_cells_are_simplex(),
                 ExcMessage("The L2 projection needs a triangulation of "
                            "triangles."));
-    std::unique_ptr<Space> space;
-    if (space_type == ProjectionSpace::powell_sabin)
-      space = std::make_unique<PowellSabinSpace>(triangulation);
-    else
-      space = std::make_unique<LinearSpace>(triangulation);
-    const types::global_dof_index size = space->n_functions();
+    const Space                   space(triangulation, space_type);
+    const types::global_dof_index size = space.dof_handler.n_dofs();
 
-    DynamicSparsityPattern               couplings(size);
-    std::vector<types::global_dof_index> functions;
-    for (const auto &cell : triangulation.active_cell_iterators())
-      {
-        space->cell_functions(cell, functions);
-        for (const auto i : functions)
-          for (const auto j : functions)
-            couplings.add(i, j);
-      }
+    DynamicSparsityPattern couplings(size);
+    DoFTools::make_sparsity_pattern(space.dof_handler, couplings);
     SparsityPattern sparsity;
     sparsity.copy_from(couplings);
     SparseMatrix<double> mass(sparsity);
     Vector<double>       coefficients(size);
 
     // Cell by cell: the local mass matrix, then one sparse addition.
-    const unsigned int m = space->n_cell_functions();
+    const unsigned int m = space.fe->n_dofs_per_cell();
     FullMatrix<double> local_mass(m, m);
     Vector<double>     local_rhs(m);
     for_each_point(
-      *space,
-      triangulation,
+      space,
       radon_rule(),
       [&](const std::vector<types::global_dof_index> &,
-          const std::vector<double> &values,
-          const Point<2>            &x,
-          const double               weight) {
-        const double fx = f(x);
+          const FEValues<2> &fe_values,
+          const unsigned int q) {
+        const double weight = fe_values.JxW(q);
+        const double fx     = f(fe_values.quadrature_point(q));
         for (unsigned int i = 0; i < m; ++i)
           {
-            local_rhs(i) += weight * fx * values[i];
+            const double phi_i = fe_values.shape_value(i, q);
+            local_rhs(i) += weight * fx * phi_i;
             for (unsigned int j = 0; j < m; ++j)
-              local_mass(i, j) += weight * values[i] * values[j];
+              local_mass(i, j) += weight * phi_i * fe_values.shape_value(j, q);
           }
       },
       [&](const std::vector<types::global_dof_index> &functions) {
@@ -397,17 +299,16 @@ namespace MpmOtm
 
     double error = 0;
     for_each_point(
-      *space,
-      triangulation,
+      space,
       collapsed_rule(8),
       [&](const std::vector<types::global_dof_index> &functions,
-          const std::vector<double>                  &values,
-          const Point<2>                             &x,
-          const double                                weight) {
-        double difference = -f(x);
+          const FEValues<2>                          &fe_values,
+          const unsigned int                          q) {
+        double difference = -f(fe_values.quadrature_point(q));
         for (unsigned int i = 0; i < m; ++i)
-          difference += coefficients(functions[i]) * values[i];
-        error += weight * difference * difference;
+          difference +=
+            coefficients(functions[i]) * fe_values.shape_value(i, q);
+        error += fe_values.JxW(q) * difference * difference;
       },
       [](const std::vector<types::global_dof_index> &) {});
     return {size, std::sqrt(error)};

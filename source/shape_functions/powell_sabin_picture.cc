@@ -68,13 +68,14 @@ namespace MpmOtm
               jacobian[d][e] = cell->vertex(e + 1)[d] - cell->vertex(0)[d];
           const Tensor<2, 2> inverse = invert(jacobian);
 
-          const Point<2> incentre = splines.split_point(cell, 3);
+          const Point<2> incentre = splines.geometry().split_point(cell, 3);
           for (unsigned int k = 0; k < 3; ++k)
             {
               // The sub-triangles (V_k, R_k, Z) and (V_k, Z, R_{k-1}).
               const Point<2> corner = cell->vertex(k);
-              const Point<2> next   = splines.split_point(cell, k);
-              const Point<2> before = splines.split_point(cell, (k + 2) % 3);
+              const Point<2> next   = splines.geometry().split_point(cell, k);
+              const Point<2> before =
+                splines.geometry().split_point(cell, (k + 2) % 3);
               for (const auto &[b, c] : {std::make_pair(next, incentre),
                                          std::make_pair(incentre, before)})
                 for (unsigned int i = 0; i < n; ++i)
@@ -104,10 +105,10 @@ namespace MpmOtm
                             if (local == numbers::invalid_unsigned_int)
                               continue;
                             const Point<2> xi(inverse * (x - cell->vertex(0)));
-                            splines.cell_values(cell,
-                                                xi,
-                                                values.data(),
-                                                gradients.data());
+                            splines.geometry().cell_values(cell,
+                                                           xi,
+                                                           values.data(),
+                                                           gradients.data());
                             for (unsigned int q = 0; q < 3; ++q)
                               patch.data(q, p) = values[3 * local + q];
                           }

@@ -171,8 +171,9 @@ quadratic_coefficients(const PowellSabin<2>   &basis,
         const auto [value, grad] = quadratic(i, vertex);
         for (unsigned int q = 0; q < 3; ++q)
           coefficients[basis.cell_functions(cell)[3 * j + q]] =
-            value +
-            grad * (basis.control_triangle(cell->vertex_index(j))[q] - vertex);
+            value + grad * (basis.geometry().control_triangle(
+                              cell->vertex_index(j))[q] -
+                            vertex);
       }
   return coefficients;
 }
@@ -199,7 +200,10 @@ check_point(const PowellSabin<2>                   &basis,
   const unsigned int n = PowellSabin<2>::n_cell_functions;
   double             values[n];
   Tensor<1, 2>       gradients[n];
-  basis.cell_values(cell, reference_point(cell, x), values, gradients);
+  basis.geometry().cell_values(cell,
+                               reference_point(cell, x),
+                               values,
+                               gradients);
   const auto &functions = basis.cell_functions(cell);
 
   double       sum = 0;
@@ -235,28 +239,28 @@ check_point(const PowellSabin<2>                   &basis,
     {
       double       unused[n];
       Tensor<1, 2> sub_gradients[n];
-      basis.cell_values(cell,
-                        reference_point(cell, x),
-                        unused,
-                        sub_gradients,
-                        sub);
+      basis.geometry().cell_values(cell,
+                                   reference_point(cell, x),
+                                   unused,
+                                   sub_gradients,
+                                   sub);
       for (unsigned int d = 0; d < 2; ++d)
         {
           double       plus[n], minus[n];
           Tensor<1, 2> ignored[n];
           Point<2>     shifted = x;
           shifted[d] += delta;
-          basis.cell_values(cell,
-                            reference_point(cell, shifted),
-                            plus,
-                            ignored,
-                            sub);
+          basis.geometry().cell_values(cell,
+                                       reference_point(cell, shifted),
+                                       plus,
+                                       ignored,
+                                       sub);
           shifted[d] -= 2. * delta;
-          basis.cell_values(cell,
-                            reference_point(cell, shifted),
-                            minus,
-                            ignored,
-                            sub);
+          basis.geometry().cell_values(cell,
+                                       reference_point(cell, shifted),
+                                       minus,
+                                       ignored,
+                                       sub);
           for (unsigned int i = 0; i < n; ++i)
             deviations.derivative =
               std::max(deviations.derivative,
@@ -287,7 +291,11 @@ jump(const PowellSabin<2> &basis,
     {
       double       values[n];
       Tensor<1, 2> gradients[n];
-      basis.cell_values(cell, reference_point(cell, x), values, gradients, sub);
+      basis.geometry().cell_values(cell,
+                                   reference_point(cell, x),
+                                   values,
+                                   gradients,
+                                   sub);
       for (unsigned int i = 0; i < n; ++i)
         {
           auto &entry = difference[basis.cell_functions(cell)[i]];
@@ -345,11 +353,11 @@ test_grid(const unsigned int n, const bool perturbed)
                       deviations);
         }
 
-      const Point<2> z = basis.split_point(cell, 3);
+      const Point<2> z = basis.geometry().split_point(cell, 3);
       for (unsigned int k = 0; k < 3; ++k)
         {
           const Point<2> &v0 = cell->vertex(k), &v1 = cell->vertex((k + 1) % 3);
-          const Point<2>  r = basis.split_point(cell, k);
+          const Point<2>  r = basis.geometry().split_point(cell, k);
           // Macro edge k: points on it, in this cell and its neighbour.
           std::vector<Point<2>> edge_points = {r};
           for (unsigned int p = 0; p < 7; ++p)
@@ -403,14 +411,15 @@ test_grid(const unsigned int n, const bool perturbed)
   for (const auto &cell : tria.active_cell_iterators())
     for (unsigned int j = 0; j < 3; ++j)
       {
-        const auto     &t = basis.control_triangle(cell->vertex_index(j));
+        const auto &t =
+          basis.geometry().control_triangle(cell->vertex_index(j));
         const Point<2> &v = cell->vertex(j);
-        const Point<2>  z = basis.split_point(cell, 3);
+        const Point<2>  z = basis.geometry().split_point(cell, 3);
         for (const Point<2> &p :
              {v,
               v + 0.5 * (z - v),
-              v + 0.5 * (basis.split_point(cell, j) - v),
-              v + 0.5 * (basis.split_point(cell, (j + 2) % 3) - v)})
+              v + 0.5 * (basis.geometry().split_point(cell, j) - v),
+              v + 0.5 * (basis.geometry().split_point(cell, (j + 2) % 3) - v)})
           {
             const Tensor<2, 2> map({{t[1][0] - t[0][0], t[2][0] - t[0][0]},
                                     {t[1][1] - t[0][1], t[2][1] - t[0][1]}});
@@ -458,10 +467,10 @@ test_grid(const unsigned int n, const bool perturbed)
                   const Point<2> x = v0 + (p / 8.) * (v1 - v0);
                   double         values[PowellSabin<2>::n_cell_functions];
                   Tensor<1, 2>   gradients[PowellSabin<2>::n_cell_functions];
-                  basis.cell_values(cell,
-                                    reference_point(cell, x),
-                                    values,
-                                    gradients);
+                  basis.geometry().cell_values(cell,
+                                               reference_point(cell, x),
+                                               values,
+                                               gradients);
                   double value = 0, derivative = 0;
                   for (unsigned int i = 0; i < 9; ++i)
                     {
@@ -518,7 +527,7 @@ test_grid(const unsigned int n, const bool perturbed)
       // upper right. The
       // prototype's numbers: its values at the mirror point (0.6, 0.55) for
       // the mirror-image triangle.
-      const auto    &t           = basis.control_triangle(4);
+      const auto    &t           = basis.geometry().control_triangle(4);
       const Point<2> expected[3] = {Point<2>(0.469670, 0.280330),
                                     Point<2>(0.926777, 0.926777),
                                     Point<2>(0.280330, 0.469670)};
@@ -536,7 +545,7 @@ test_grid(const unsigned int n, const bool perturbed)
             continue;
           double       values[PowellSabin<2>::n_cell_functions];
           Tensor<1, 2> gradients[PowellSabin<2>::n_cell_functions];
-          basis.cell_values(cell, xi, values, gradients);
+          basis.geometry().cell_values(cell, xi, values, gradients);
           for (unsigned int j = 0; j < 3; ++j)
             if (cell->vertex_index(j) == 4)
               for (unsigned int q = 0; q < 3; ++q)
@@ -595,10 +604,9 @@ end
             const auto [value, grad] = quadratic(g, scale(vertex));
             for (unsigned int q = 0; q < 3; ++q)
               global[basis.cell_functions(cell)[3 * j + q]] =
-                value +
-                grad *
-                  (scale(basis.control_triangle(cell->vertex_index(j))[q]) -
-                   scale(vertex));
+                value + grad * (scale(basis.geometry().control_triangle(
+                                  cell->vertex_index(j))[q]) -
+                                scale(vertex));
           }
       unsigned int k = 0;
       for (const auto &particle : points.particle_handler())

@@ -55,12 +55,14 @@ namespace MpmOtm
    * The L2 projection f_h of @p f onto @p space on @p triangulation
    * (thesis Eqs. 3.66-3.70: consistent mass matrix, no boundary conditions)
    * and its error ||f_h - f||_L2 (thesis Eq. 3.71). Mass matrix and
-   * right-hand side are integrated with the 7-point rule of degree 5
+   * right-hand side are integrated through FEValues (FE_SimplexP(1) or
+   * FE_PowellSabin on a DoFHandler) with the 7-point rule of degree 5
    * (Radon) on every triangle (P1) or on each of the six sub-triangles of
-   * the Powell-Sabin refinement (where the splines are quadratic), so the
-   * mass matrix is exact; the error with an 8 x 8 collapsed Gauss rule
-   * (QDuffy) on the same pieces. The system is solved with a sparse direct
-   * solver (UMFPACK).
+   * the Powell-Sabin refinement (where the splines are quadratic; a
+   * composite rule per cell, as the sub-triangles differ from cell to
+   * cell), so the mass matrix is exact; the error with an 8 x 8 collapsed
+   * Gauss rule (QDuffy) on the same pieces. The system is solved with a
+   * sparse direct solver (UMFPACK).
    */
   ProjectionError
   l2_projection_error(const Triangulation<2> &triangulation,

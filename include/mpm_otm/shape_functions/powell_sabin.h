@@ -7,6 +7,7 @@
 #include <deal.II/fe/fe.h>
 #include <deal.II/lac/affine_constraints.h>
 
+#include <mpm_otm/shape_functions/powell_sabin_geometry.h>
 #include <mpm_otm/shape_functions/shape_functions.h>
 
 #include <array>
@@ -17,37 +18,17 @@
 namespace MpmOtm
 {
   /**
-   * Quadratic Powell-Sabin splines on a conforming triangulation (thesis
-   * Sect. 3.5, after Dierckx): C1 piecewise quadratics on the Powell-Sabin
-   * refinement, three functions per vertex.
-   *
-   * Every triangle is split into six sub-triangles T_{k,0} = (V_k, R_k, Z),
-   * T_{k,1} = (R_k, V_{k+1}, Z) (k = 0, 1, 2) by its incentre Z and one
-   * point R_k on each edge k = (V_k, V_{k+1}): where the segment between the
-   * incentres of the two triangles at the edge crosses it, or the edge's
-   * midpoint on the domain boundary (thesis 3.5.1). Each vertex V gets a
-   * control triangle Q^0 Q^1 Q^2 that contains its Powell-Sabin points (V,
-   * the midpoints between V and the split points of its edges and the
-   * incentres of its triangles), chosen by the thesis's near-optimal rule
-   * (3.5.2: the smallest triangle among those formed by three edges of the
-   * points' convex hull, or by two and a third edge orthogonal to their
-   * bisector), with one restriction: a candidate must use every hull edge
-   * that passes through V, so at a boundary vertex on a straight side two
-   * control points lie on that side and at a convex corner V itself is one
-   * (homogeneous Dirichlet conditions then fix whole coefficients). The
-   * triplets of the three functions of V are the barycentric coordinates
-   * lambda_q of the control triangle and their gradients (Eqs. 3.47-3.49),
-   * and a function's Bezier ordinates next to V are lambda_q at the
-   * Powell-Sabin points (Eqs. 3.54-3.56; the other ordinates follow from
-   * C1 continuity). The functions are non-negative, a partition of unity,
-   * reproduce quadratics and are C1.
-   *
-   * Function q of vertex v has the index 3 i + q, i the vertex's index in
-   * the FE_SimplexP(1) numbering of dof_handler(): owned ranges are
-   * contiguous and a vertex's three functions share an owner. Values at a
-   * point come from the point's barycentric coordinates in its cell, which
-   * select the sub-triangle; only per-cell numbers (incentre, split points
-   * and four ordinates per function) are stored.
+   * The family of quadratic Powell-Sabin splines on a conforming
+   * triangulation (thesis Sect. 3.5): C1 piecewise quadratics, three
+   * functions per vertex. PowellSabinGeometry builds them and evaluates
+   * them; FE_PowellSabin makes them a deal.II element, whose DoFHandler
+   * numbers and distributes them (function q of a vertex is its degree of
+   * freedom q; owned ranges are contiguous and a vertex's three functions
+   * are consecutive, start at a multiple of three and share an owner). This
+   * class is what the rest of the program sees of them: the values at the
+   * material points, which come from the points' barycentric coordinates in
+   * their cells through the geometry's kernel, and the boundary conditions
+   * on the coefficients.
    *
    * Only defined for dim = 2; in 1D and 3D parse_parameters() stops with a
    * message. Grid output writes the field's values at the vertices
@@ -62,7 +43,8 @@ namespace MpmOtm
     /**
      * Number of functions that do not vanish on a cell: three per vertex.
      */
-    static constexpr unsigned int n_cell_functions = 9;
+    static constexpr unsigned int n_cell_functions =
+      PowellSabinGeometry::n_cell_functions;
 
     static void
     declare_parameters(ParameterHandler &prm);
@@ -164,8 +146,8 @@ namespace MpmOtm
                         const std::string &file_name) const override;
 
     /**
-     * 3: function q of vertex v has the global index 3 i + q (i the vertex's
-     * index in the FE_SimplexP(1) numbering).
+     * 3: the functions of a vertex are its three degrees of freedom of
+     * FE_PowellSabin, consecutive from a multiple of three.
      */
     unsigned int
     functions_per_node() const override;
@@ -185,7 +167,7 @@ namespace MpmOtm
       const unsigned int v) const override;
 
     /**
-     * The FE_SimplexP(1) vertex numbering, also the output element.
+     * The FE_SimplexP(1) vertex numbering, the output element.
      */
     const DoFHandler<dim> &
     dof_handler() const override;
@@ -207,36 +189,16 @@ namespace MpmOtm
       const typename Triangulation<dim>::active_cell_iterator &cell) const;
 
     /**
-     * Values and gradients of the nine functions of @p cell at the point
-     * with reference coordinates @p xi (barycentric coordinates
-     * (1 - xi_0 - xi_1, xi_0, xi_1)), in the order of cell_functions(). The
-     * point's sub-triangle is found from @p xi; with @p sub_triangle
-     * (2 k + half for T_{k,half}) that sub-triangle's quadratic is evaluated
-     * instead, also outside it.
+     * The refinement and the functions' numbers, with their evaluation.
      */
-    void
-    cell_values(
-      const typename Triangulation<dim>::active_cell_iterator &cell,
-      const Point<dim>                                        &xi,
-      double *const                                            values,
-      Tensor<1, dim> *const                                    gradients,
-      const unsigned int sub_triangle = numbers::invalid_unsigned_int) const;
+    const PowellSabinGeometry &
+    geometry() const;
 
     /**
-     * The control triangle of the vertex with index @p vertex in the
-     * triangulation.
+     * The DoFHandler of FE_PowellSabin that numbers the functions.
      */
-    const std::array<Point<dim>, 3> &
-    control_triangle(const unsigned int vertex) const;
-
-    /**
-     * The point on edge @p edge (from vertex @p edge to vertex
-     * @p edge + 1 mod 3) of @p cell where the Powell-Sabin refinement splits
-     * it, and the cell's split point (incentre) for @p edge = 3.
-     */
-    Point<dim>
-    split_point(const typename Triangulation<dim>::active_cell_iterator &cell,
-                const unsigned int edge) const;
+    const DoFHandler<dim> &
+    function_dof_handler() const;
 
   private:
     /**
@@ -252,29 +214,17 @@ namespace MpmOtm
                                const Point<dim> &,
                                const Tensor<1, dim> &)> &action) const;
 
-    /**
-     * What a cell needs to evaluate its functions: incentre barycentric
-     * coordinates a_k, split weights rho_k (R_k = rho_k V_k + (1 - rho_k)
-     * V_{k+1}), gradients of the barycentric coordinates, and per function
-     * the ordinates f, Lf, Lb, Lt of the owner vertex V_j at V_j,
-     * mid(V_j, R_j), mid(V_j, R_{j-1}) and mid(V_j, Z) (thesis Eqs. 3.54-3.56).
-     */
-    struct CellData
-    {
-      std::array<double, 3>                                 a;
-      std::array<double, 3>                                 rho;
-      std::array<Tensor<1, dim>, 3>                         zeta_gradients;
-      std::array<std::array<double, 4>, n_cell_functions>   ordinates;
-      std::array<types::global_dof_index, n_cell_functions> functions;
-    };
-
-    std::unique_ptr<FiniteElement<dim>> fe;
+    std::shared_ptr<PowellSabinGeometry> splines;
+    /// FE_PowellSabin on the functions, numbered by function_dofs.
+    std::unique_ptr<FiniteElement<dim>> function_element;
+    DoFHandler<dim>                     function_dofs;
+    /// FE_SimplexP(1) on the vertices, for grid output.
+    std::unique_ptr<FiniteElement<dim>> vertex_element;
     DoFHandler<dim>                     vertex_dofs;
-    std::vector<CellData>               cell_data;
-    /// Control triangle of each vertex (by vertex index).
-    std::vector<std::array<Point<dim>, 3>> control_triangles;
-    /// alpha_v^q = lambda_q(V) of each vertex (by vertex index).
-    std::vector<std::array<double, 3>> vertex_values;
+    /// The functions of each cell (by active cell index), as the
+    /// geometry's kernel orders them.
+    std::vector<std::array<types::global_dof_index, n_cell_functions>>
+      functions_of_cell;
   };
 } // namespace MpmOtm
 
