@@ -9,7 +9,9 @@ namespace MpmOtm
     /**
      * The number of points of @p patch and of its sub-cells: a hypercube
      * patch subdivided n times has (n + 1)^dim points in lexicographic
-     * order, a simplex patch (never subdivided here) its vertices.
+     * order, a simplex patch its vertices, and a triangle patch of a
+     * quadratic element (Powell-Sabin) its vertices and then its edges'
+     * midpoints (VTK's quadratic triangle), written as four triangles.
      */
     template <int dim>
     std::pair<unsigned int, unsigned int>
@@ -18,6 +20,9 @@ namespace MpmOtm
       if (patch.reference_cell == ReferenceCells::get_hypercube<dim>())
         return {Utilities::fixed_power<dim>(patch.n_subdivisions + 1),
                 Utilities::fixed_power<dim>(patch.n_subdivisions)};
+      if (patch.reference_cell == ReferenceCells::Triangle &&
+          patch.n_subdivisions == 2)
+        return {6, 4};
       AssertThrow(patch.n_subdivisions == 1,
                   ExcMessage("Grid output: a subdivided simplex patch."));
       return {patch.reference_cell.n_vertices(), 1};
@@ -179,7 +184,12 @@ namespace MpmOtm
       {
         const auto [n_points, n_sub_cells] = points_and_cells(patch);
         const unsigned int n               = patch.n_subdivisions;
-        if (patch.reference_cell != ReferenceCells::get_hypercube<dim>())
+        if (patch.reference_cell == ReferenceCells::Triangle &&
+            patch.n_subdivisions == 2)
+          // Corners 0, 1, 2 and midpoints 3 (0-1), 4 (1-2), 5 (2-0).
+          for (const unsigned int v : {0, 3, 5, 3, 1, 4, 5, 4, 2, 3, 4, 5})
+            cells.push_back(patch_start + v);
+        else if (patch.reference_cell != ReferenceCells::get_hypercube<dim>())
           for (unsigned int v = 0; v < n_points; ++v)
             cells.push_back(patch_start + v);
         else

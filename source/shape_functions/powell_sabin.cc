@@ -1,5 +1,4 @@
 #include <deal.II/dofs/dof_tools.h>
-#include <deal.II/fe/fe_simplex_p.h>
 #include <deal.II/particles/particle_handler.h>
 
 #include <mpm_otm/base/plugins.h>
@@ -74,9 +73,6 @@ namespace MpmOtm
     function_element = std::make_unique<FE_PowellSabin>(splines);
     function_dofs.reinit(triangulation);
     function_dofs.distribute_dofs(*function_element);
-    vertex_element = std::make_unique<FE_SimplexP<2>>(1);
-    vertex_dofs.reinit(triangulation);
-    vertex_dofs.distribute_dofs(*vertex_element);
 
     // functions_per_node() promises that a vertex's functions are
     // consecutive from a multiple of three; DoFHandler numbers a vertex's
@@ -380,7 +376,7 @@ namespace MpmOtm
   const DoFHandler<dim> &
   PowellSabin<dim>::dof_handler() const
   {
-    return vertex_dofs;
+    return function_dofs;
   }
 
 
@@ -390,25 +386,8 @@ namespace MpmOtm
   PowellSabin<dim>::to_cell_dofs(const VectorType &coefficients,
                                  VectorType       &values) const
   {
-    IndexSet relevant;
-    DoFTools::extract_locally_relevant_dofs(vertex_dofs, relevant);
-    values.reinit(vertex_dofs.locally_owned_dofs(),
-                  relevant,
-                  vertex_dofs.get_triangulation().get_communicator());
-    for (const auto &cell : vertex_dofs.active_cell_iterators())
-      if (cell->is_locally_owned())
-        for (const auto j : cell->vertex_indices())
-          {
-            const types::global_dof_index dof = cell->vertex_dof_index(j, 0);
-            if (!values.in_local_range(dof))
-              continue;
-            const auto &functions = cell_functions(cell);
-            const auto &alpha = splines->vertex_values(cell->vertex_index(j));
-            double      value = 0;
-            for (unsigned int q = 0; q < 3; ++q)
-              value += coefficients(functions[3 * j + q]) * alpha[q];
-            values(dof) = value;
-          }
+    values.reinit(coefficients.get_partitioner());
+    values.copy_locally_owned_data_from(coefficients);
     values.update_ghost_values();
   }
 
@@ -420,15 +399,6 @@ namespace MpmOtm
   {
     Assert(splines != nullptr, ExcNotInitialized());
     return *splines;
-  }
-
-
-
-  template <int dim>
-  const DoFHandler<dim> &
-  PowellSabin<dim>::function_dof_handler() const
-  {
-    return function_dofs;
   }
 
 

@@ -16,8 +16,12 @@
 // with linear functions 16 quadrilaterals of 4 own nodes each (64 nodes),
 // with quadratic B-splines (their Bernstein form, each cell a patch of 3 x 3
 // nodes subdivided twice) 64 quadrilaterals on 144 nodes, with linear
-// functions on triangles (four per block around its centre; on one rank,
-// as simplex grids run) 64 triangles of 3 own nodes each (192 nodes);
+// functions on triangles (four per block around its centre; on one rank)
+// 64 triangles of 3 own nodes each (192 nodes), with Powell-Sabin splines
+// on the same triangles (on two ranks; FE_PowellSabin evaluated by DataOut
+// at the corners and edge midpoints, each triangle written as the four
+// triangles between them; Young's modulus halved for a stable time step)
+// 256 triangles on 384 nodes;
 // every cell's corners counter-clockwise with the area of a cell
 // (shoelace formula), and the nodal velocity (1, 0, 0) at every node
 // (every function carries mass, and the functions sum to one).
@@ -219,4 +223,14 @@ main(int argc, char **argv)
         ->run();
       check_grid("linear on triangles", 64, 192, 3);
     }
+
+  simulator_from_text<2>(parameters +
+                         "subsection Mesh\n set Cell type = simplex\nend\n"
+                         "set Shape functions = Powell-Sabin\n"
+                         // a softer material: dt = 1e-4 is stable
+                         "subsection Material\n"
+                         " set Young's modulus = 5e5\nend\n")
+    ->run();
+  if (root)
+    check_grid("Powell-Sabin", 256, 384, 3);
 }

@@ -15,8 +15,10 @@
 //   quadratic g = 1 + x + 2 y + x^2 - x y + 3 y^2 on the side x = 0, and
 //   random coefficients elsewhere, distributed: the field equals g on that
 //   side at FEFaceValues points, to 1e-12;
-// - DataOut: the field of the quadratic x y written with the element; at
-//   every patch point the value x y, to 1e-6 (DataOut stores floats).
+// - DataOut: the field of the quadratic x y written with the element has
+//   the value x y at every patch point, to 1e-6 (DataOut stores floats);
+//   the gradient of a random spline, written with a postprocessor, agrees
+//   to 1e-5 at every point that several triangles share (C1).
 
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/dofs/dof_tools.h>
@@ -26,6 +28,7 @@
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/vector.h>
 #include <deal.II/numerics/data_out.h>
+#include <deal.II/numerics/data_postprocessor.h>
 
 #include <mpm_otm/shape_functions/l2_projection.h>
 #include <mpm_otm/shape_functions/powell_sabin.h>
@@ -68,7 +71,7 @@ namespace
     const PowellSabin<2> &basis,
     const std::function<std::pair<double, Tensor<1, 2>>(const Point<2> &)> &g)
   {
-    const DoFHandler<2> &dof_handler = basis.function_dof_handler();
+    const DoFHandler<2> &dof_handler = basis.dof_handler();
     Vector<double>       coefficients(dof_handler.n_dofs());
     for (const auto &cell : dof_handler.active_cell_iterators())
       for (const unsigned int j : cell->vertex_indices())
@@ -103,6 +106,27 @@ namespace
       return Tensor<1, 2>({1. + 2. * x[0] - x[1], 2. - x[0] + 6. * x[1]});
     }
   };
+
+  /**
+   * The gradient of a scalar field, for DataOut.
+   */
+  class Gradient : public DataPostprocessorVector<2>
+  {
+  public:
+    Gradient()
+      : DataPostprocessorVector<2>("gradient", update_gradients)
+    {}
+
+    void
+    evaluate_scalar_field(
+      const DataPostprocessorInputs::Scalar<2> &inputs,
+      std::vector<Vector<double>> &computed_quantities) const override
+    {
+      for (unsigned int q = 0; q < computed_quantities.size(); ++q)
+        for (unsigned int d = 0; d < 2; ++d)
+          computed_quantities[q](d) = inputs.solution_gradients[q][d];
+    }
+  };
 } // namespace
 
 int
@@ -115,10 +139,10 @@ main(int argc, char **argv)
   make_b4_grid(triangulation, 6, 0.2);
   PowellSabin<2> basis;
   basis.initialize(triangulation);
-  const DoFHandler<2>    &dof_handler = basis.function_dof_handler();
-  const FiniteElement<2> &fe          = dof_handler.get_fe();
-  const MappingFE<2>      mapping(FE_SimplexP<2>(1));
-  const unsigned int      n = fe.n_dofs_per_cell();
+  const DoFHandler<2>                 &dof_handler = basis.dof_handler();
+  const FiniteElement<2>              &fe          = dof_handler.get_fe();
+  const MappingFE<2>                   mapping(FE_SimplexP<2>(1));
+  const unsigned int                   n = fe.n_dofs_per_cell();
   std::vector<types::global_dof_index> dofs(n);
   check(fe.get_name() == "FE_PowellSabin" && n == 9 &&
           fe.n_dofs_per_vertex() == 3,
@@ -312,26 +336,51 @@ main(int argc, char **argv)
             << " points within 1e-12" << std::endl;
   }
 
-  // DataOut of the field x y: every patch point has the value x y.
+  // DataOut of the field x y (exact at every patch point) and of a field
+  // with random coefficients with its gradient: at every point that
+  // several patches share (the vertices and edge midpoints), value and
+  // gradient agree (C1).
   {
-    const Vector<double> field = quadratics[4];
-    DataOut<2>           data_out;
+    std::mt19937   generator(7);
+    Vector<double> random_field(dof_handler.n_dofs());
+    for (auto &c : random_field)
+      c = generator() / 4294967296.;
+    const Gradient gradient;
+    DataOut<2>     data_out;
     data_out.attach_dof_handler(dof_handler);
-    data_out.add_data_vector(field, "xy");
+    data_out.add_data_vector(quadratics[4], "xy");
+    data_out.add_data_vector(random_field, gradient);
     data_out.build_patches(mapping, 2);
-    double       error    = 0;
-    unsigned int n_points = 0;
+
+    // Rows: xy, the gradient's two components, then the point.
+    double                                          error = 0, jump = 0;
+    unsigned int                                    n_points = 0;
+    std::map<std::pair<float, float>, Tensor<1, 2>> gradient_at;
     for (const auto &patch : data_out.get_patches())
       for (unsigned int j = 0; j < patch.data.n_cols(); ++j, ++n_points)
         {
-          const Point<2> x(patch.data(1, j), patch.data(2, j));
+          const Point<2> x(patch.data(3, j), patch.data(4, j));
           error = std::max(error, std::abs(patch.data(0, j) - x[0] * x[1]));
+          const Tensor<1, 2> g({patch.data(1, j), patch.data(2, j)});
+          const auto [entry, is_new] =
+            gradient_at.emplace(std::make_pair(patch.data(3, j),
+                                               patch.data(4, j)),
+                                g);
+          if (!is_new)
+            jump = std::max(jump, (entry->second - g).norm());
         }
     // DataOut keeps its points and data in single precision.
+    check(n_points == 6 * triangulation.n_active_cells(),
+          "six points per triangle");
+    check(gradient_at.size() ==
+            triangulation.n_vertices() + triangulation.n_active_faces(),
+          "the patches share the vertices and edge midpoints");
     check(error < 1e-6, "DataOut of x y: error " + rounded(error, 2));
-    deallog << "DataOut: " << data_out.get_patches().size() << " patches, "
-            << n_points
-            << " points with the value x y within 1e-6 (single precision)"
+    check(jump < 1e-5, "DataOut gradient jump " + rounded(jump, 2));
+    deallog << "DataOut: " << n_points << " points, x y exact within 1e-6 "
+            << "(single precision); at the " << gradient_at.size()
+            << " distinct points the gradient of a random spline agrees "
+               "between patches within 1e-5"
             << std::endl;
   }
 }

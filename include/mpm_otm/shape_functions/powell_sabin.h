@@ -31,8 +31,8 @@ namespace MpmOtm
    * on the coefficients.
    *
    * Only defined for dim = 2; in 1D and 3D parse_parameters() stops with a
-   * message. Grid output writes the field's values at the vertices
-   * (FE_SimplexP(1)), not the piecewise quadratic between them.
+   * message. Grid output writes the field with FE_PowellSabin: DataOut
+   * evaluates it at the vertices and edge midpoints of every triangle.
    */
   template <int dim>
   class PowellSabin : public ShapeFunctions<dim>
@@ -167,14 +167,15 @@ namespace MpmOtm
       const unsigned int v) const override;
 
     /**
-     * The FE_SimplexP(1) vertex numbering, the output element.
+     * The DoFHandler of FE_PowellSabin: its degrees of freedom are the
+     * functions, and grid output writes the field with it.
      */
     const DoFHandler<dim> &
     dof_handler() const override;
 
     /**
-     * The field's values at the vertices, sum_q c_v^q alpha_v^q (the
-     * functions of the other vertices vanish there).
+     * A copy of @p coefficients: they are the degrees of freedom of
+     * dof_handler().
      */
     void
     to_cell_dofs(const VectorType &coefficients,
@@ -194,12 +195,6 @@ namespace MpmOtm
     const PowellSabinGeometry &
     geometry() const;
 
-    /**
-     * The DoFHandler of FE_PowellSabin that numbers the functions.
-     */
-    const DoFHandler<dim> &
-    function_dof_handler() const;
-
   private:
     /**
      * Call @p action(function, V, Q, t) for every function of every vertex
@@ -218,9 +213,6 @@ namespace MpmOtm
     /// FE_PowellSabin on the functions, numbered by function_dofs.
     std::unique_ptr<FiniteElement<dim>> function_element;
     DoFHandler<dim>                     function_dofs;
-    /// FE_SimplexP(1) on the vertices, for grid output.
-    std::unique_ptr<FiniteElement<dim>> vertex_element;
-    DoFHandler<dim>                     vertex_dofs;
     /// The functions of each cell (by active cell index), as the
     /// geometry's kernel orders them.
     std::vector<std::array<types::global_dof_index, n_cell_functions>>

@@ -23,17 +23,19 @@ namespace MpmOtm
 
   /**
    * A family of shape functions on the background grid (linear Lagrange,
-   * B-splines; later max-ent, Powell-Sabin). The rest of the code only asks
+   * B-splines, max-ent, Powell-Sabin). The rest of the code only asks
    * it "for each material point: the indices, values and gradients of the
    * functions that do not vanish there" (journal Alg. 1, step 3), how the
    * functions are numbered and distributed over the MPI ranks, and which
    * functions carry a Dirichlet condition on a boundary.
    *
    * Every cell of the grid carries a deal.II finite element (FE_Q(1),
-   * FE_SimplexP(1), FE_Bernstein(p)): for the linear family its degrees of
-   * freedom are the functions; for B-splines the functions restricted to a
-   * cell are a fixed combination of that element's Bernstein polynomials.
-   * Grid output writes fields in the cells' element.
+   * FE_SimplexP(1), FE_Bernstein(p), FE_PowellSabin): for the linear and
+   * Powell-Sabin families its degrees of freedom are the functions; for
+   * B-splines the functions restricted to a cell are a fixed combination of
+   * that element's Bernstein polynomials; max-ent writes its values at the
+   * vertices in FE_Q(1) / FE_SimplexP(1). Grid output writes fields in the
+   * cells' element.
    */
   template <int dim>
   class ShapeFunctions
