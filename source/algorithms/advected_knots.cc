@@ -75,18 +75,14 @@ namespace MpmOtm
         const unsigned int   layer     = (id % 2 == 0) ? 0 : n[direction] - 1;
         for (const auto global : owned)
           {
-            types::global_dof_index rest    = global;
-            double                  weight  = 1.;
-            bool                    on_face = true;
+            const auto i       = splines.multi_index(global);
+            double     weight  = 1.;
+            bool       on_face = true;
             for (unsigned int d = 0; d < dim; ++d)
-              {
-                const unsigned int i = rest % n[d];
-                rest /= n[d];
-                if (d == direction)
-                  on_face = (i == layer);
-                else
-                  weight *= integral(d, i);
-              }
+              if (d == direction)
+                on_face = (i[d] == layer);
+              else
+                weight *= integral(d, i[d]);
             if (!on_face)
               continue;
             const unsigned int local = partitioner.global_to_local(global);
@@ -164,13 +160,10 @@ namespace MpmOtm
       mean[d].assign(n[d], 0.);
     for (const auto global : partitioner.locally_owned_range())
       {
-        const unsigned int      local = partitioner.global_to_local(global);
-        types::global_dof_index rest  = global;
+        const unsigned int local = partitioner.global_to_local(global);
+        const auto         i     = splines.multi_index(global);
         for (unsigned int d = 0; d < dim; ++d)
-          {
-            mean[d][rest % n[d]] += system.velocity[d].local_element(local);
-            rest /= n[d];
-          }
+          mean[d][i[d]] += system.velocity[d].local_element(local);
       }
     const double n_total = splines.n_functions();
     for (unsigned int d = 0; d < dim; ++d)

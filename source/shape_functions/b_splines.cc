@@ -156,40 +156,31 @@ namespace MpmOtm
       binomial[b] = binomial[b - 1] * (p - b + 1) / b;
 
     span_of_cell.resize(triangulation->n_active_cells());
+    for (const auto &cell : triangulation->active_cell_iterators())
+      if (!cell->is_artificial())
+        {
+          const Point<dim> centre = cell->center();
+          for (unsigned int d = 0; d < dim; ++d)
+            span_of_cell[cell->active_cell_index()][d] =
+              std::upper_bound(knots[d].begin(), knots[d].end(), centre[d]) -
+              knots[d].begin() - 1;
+        }
+    distribute_functions();
+
     std::vector<types::global_dof_index> relevant_indices;
     std::vector<types::global_dof_index> indices;
     for (const auto &cell : triangulation->active_cell_iterators())
-      {
-        if (cell->is_artificial())
-          continue;
-        const Point<dim> centre = cell->center();
-        for (unsigned int d = 0; d < dim; ++d)
-          span_of_cell[cell->active_cell_index()][d] =
-            std::upper_bound(knots[d].begin(), knots[d].end(), centre[d]) -
-            knots[d].begin() - 1;
-        if (cell->is_locally_owned())
-          {
-            functions_on_cell(cell, indices);
-            relevant_indices.insert(relevant_indices.end(),
-                                    indices.begin(),
-                                    indices.end());
-          }
-      }
+      if (cell->is_locally_owned())
+        {
+          functions_on_cell(cell, indices);
+          relevant_indices.insert(relevant_indices.end(),
+                                  indices.begin(),
+                                  indices.end());
+        }
     std::sort(relevant_indices.begin(), relevant_indices.end());
     relevant_indices.erase(std::unique(relevant_indices.begin(),
                                        relevant_indices.end()),
                            relevant_indices.end());
-
-    const types::global_dof_index n    = n_functions();
-    const MPI_Comm                comm = triangulation->get_communicator();
-    const unsigned int            rank = Utilities::MPI::this_mpi_process(comm);
-    const unsigned int n_ranks         = Utilities::MPI::n_mpi_processes(comm);
-    owned.clear();
-    owned.set_size(n);
-    // 64-bit products: n * n_ranks may exceed 32 bits.
-    const auto begin = static_cast<std::uint64_t>(rank) * n / n_ranks;
-    const auto end   = static_cast<std::uint64_t>(rank + 1) * n / n_ranks;
-    owned.add_range(begin, end);
     relevant = owned;
     relevant.add_indices(relevant_indices.begin(), relevant_indices.end());
 
@@ -198,6 +189,98 @@ namespace MpmOtm
     dofs.distribute_dofs(*fe);
     hierarchic_of_lexicographic =
       FETools::lexicographic_to_hierarchic_numbering<dim>(p);
+  }
+
+
+
+  template <int dim>
+  void
+  BSplines<dim>::distribute_functions()
+  {
+    const types::global_dof_index n    = n_functions();
+    const MPI_Comm                comm = triangulation->get_communicator();
+    global_of_lexicographic.clear();
+    lexicographic_of_global.clear();
+    owned.clear();
+    owned.set_size(n);
+    if (Utilities::MPI::n_mpi_processes(comm) == 1)
+      {
+        owned.add_range(0, n);
+        return;
+      }
+
+    // The functions whose anchor cell is one of this rank's cells.
+    const auto anchor = [&](const unsigned int d, const unsigned int i) {
+      const unsigned int n_spans = knots[d].size() - 1;
+      return std::min(i - std::min(i, p / 2), n_spans - 1);
+    };
+    const unsigned int                   q = p + 1;
+    std::vector<types::global_dof_index> own;
+    for (const auto &cell : triangulation->active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          const auto &span = span_of_cell[cell->active_cell_index()];
+          for (unsigned int local = 0; local < Utilities::fixed_power<dim>(q);
+               ++local)
+            {
+              types::global_dof_index       lexicographic = 0;
+              bool                          anchored_here = true;
+              unsigned int                  rest          = local;
+              std::array<unsigned int, dim> i;
+              for (unsigned int d = 0; d < dim; ++d, rest /= q)
+                {
+                  i[d]          = span[d] + rest % q;
+                  anchored_here = anchored_here && anchor(d, i[d]) == span[d];
+                }
+              if (!anchored_here)
+                continue;
+              for (unsigned int d = dim; d-- > 0;)
+                lexicographic = lexicographic * n_per_direction[d] + i[d];
+              own.push_back(lexicographic);
+            }
+        }
+    std::sort(own.begin(), own.end());
+
+    // Rank after rank, each rank's functions in lexicographic order.
+    const std::vector<std::vector<types::global_dof_index>> all =
+      Utilities::MPI::all_gather(comm, own);
+    global_of_lexicographic.assign(n, numbers::invalid_dof_index);
+    lexicographic_of_global.resize(n);
+    types::global_dof_index next = 0;
+    for (unsigned int rank = 0; rank < all.size(); ++rank)
+      {
+        if (rank == Utilities::MPI::this_mpi_process(comm) && !own.empty())
+          owned.add_range(next, next + own.size());
+        for (const auto lexicographic : all[rank])
+          {
+            global_of_lexicographic[lexicographic] = next;
+            lexicographic_of_global[next]          = lexicographic;
+            ++next;
+          }
+      }
+    AssertThrow(next == n && std::find(global_of_lexicographic.begin(),
+                                       global_of_lexicographic.end(),
+                                       numbers::invalid_dof_index) ==
+                               global_of_lexicographic.end(),
+                ExcInternalError());
+  }
+
+
+
+  template <int dim>
+  std::array<unsigned int, dim>
+  BSplines<dim>::multi_index(const types::global_dof_index global) const
+  {
+    types::global_dof_index       rest = lexicographic_of_global.empty() ?
+                                           global :
+                                           lexicographic_of_global[global];
+    std::array<unsigned int, dim> i;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        i[d] = rest % n_per_direction[d];
+        rest /= n_per_direction[d];
+      }
+    return i;
   }
 
 
@@ -323,7 +406,9 @@ namespace MpmOtm
           }
         for (unsigned int d = dim; d-- > 0;)
           global = global * n_per_direction[d] + first[d] + a[d];
-        indices[local] = global;
+        indices[local] = global_of_lexicographic.empty() ?
+                           global :
+                           global_of_lexicographic[global];
       }
   }
 
@@ -468,13 +553,8 @@ namespace MpmOtm
       (boundary_id % 2 == 0) ? 0 : n_per_direction[direction] - 1;
     IndexSet result(n_functions());
     for (types::global_dof_index i = 0; i < n_functions(); ++i)
-      {
-        types::global_dof_index rest = i;
-        for (unsigned int d = 0; d < direction; ++d)
-          rest /= n_per_direction[d];
-        if (rest % n_per_direction[direction] == layer)
-          result.add_index(i);
-      }
+      if (multi_index(i)[direction] == layer)
+        result.add_index(i);
     result.compress();
     return result;
   }

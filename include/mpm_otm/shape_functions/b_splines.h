@@ -26,10 +26,15 @@ namespace MpmOtm
    * Moving the knots (unified approach, journal Alg. 3) only recomputes the
    * extraction operators; numbering and sparsity stay.
    *
-   * Function (i_0, ..., i_{dim-1}) has the global index
-   * i_0 + n_0 (i_1 + n_1 i_2). Rank r owns the contiguous range
-   * [r N / P, (r + 1) N / P) of the N functions; its relevant functions are
-   * those that do not vanish on its cells.
+   * Function (i_0, ..., i_{dim-1}) has the tensor-product (lexicographic)
+   * index i_0 + n_0 (i_1 + n_1 i_2). It belongs to the rank that owns its
+   * anchor cell, the cell of the spans (a(i_0), ..., a(i_{dim-1})) with
+   * a(i) = i - floor(p / 2) clamped to the spans of its direction: the
+   * middle of the function's support, which holds its Greville point on
+   * uniform knots. The global indices number each rank's functions
+   * contiguously, in lexicographic order, rank after rank; on one rank they
+   * are the lexicographic indices. A rank's relevant functions are those
+   * that do not vanish on its cells.
    */
   template <int dim>
   class BSplines : public ShapeFunctions<dim>
@@ -136,6 +141,13 @@ namespace MpmOtm
     breakpoints(const unsigned int d) const;
 
     /**
+     * The multi-index (i_0, ..., i_{dim-1}) of the function with global
+     * index @p global (owned or relevant on this rank).
+     */
+    std::array<unsigned int, dim>
+    multi_index(const types::global_dof_index global) const;
+
+    /**
      * Number of functions of direction @p d.
      */
     unsigned int
@@ -180,6 +192,14 @@ namespace MpmOtm
 
   private:
     /**
+     * Give each function to the rank that owns its anchor cell and number
+     * the functions rank after rank (owned, global_of_lexicographic,
+     * lexicographic_of_global). Collective.
+     */
+    void
+    distribute_functions();
+
+    /**
      * Extraction operators of direction @p d from the current knots, by
      * Cox-de Boor evaluation at p + 1 points of every span.
      */
@@ -195,7 +215,11 @@ namespace MpmOtm
     std::vector<std::array<unsigned int, dim>> span_of_cell;
     IndexSet                                   owned;
     IndexSet                                   relevant;
-    std::vector<double>                        binomial;
+    /// The global index of each lexicographic index and the inverse; empty
+    /// on one rank, where both are the identity.
+    std::vector<types::global_dof_index> global_of_lexicographic;
+    std::vector<types::global_dof_index> lexicographic_of_global;
+    std::vector<double>                  binomial;
     /// (a_0, ..., a_{dim-1}) of each of the (p+1)^dim local functions.
     std::vector<std::array<unsigned int, dim>> local_multi_index;
 
