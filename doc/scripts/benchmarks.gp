@@ -168,7 +168,7 @@ unset multiplot
 
 set output "figures/B6-remedies.png"
 set terminal pngcairo size 800,680 font ",11"
-set multiplot title "B6 large deformation, Powell-Sabin MPM on 1 x 8 (+1 empty) blocks: mass-matrix remedies (thesis Ch. 5)"
+set multiplot title "B6 large deformation, Powell-Sabin MPM on 1 x 8 (+1 empty) blocks: mass-matrix remedies (thesis Ch. 5)\nand the unified approach on the moving 1 x 8 blocks, consistent mass"
 # The key of both plots in a strip at the bottom, clear of the curves.
 set key at screen 0.5, screen 0.045 center center horizontal maxrows 2 width -2
 set size 1, 0.42
@@ -177,14 +177,16 @@ set ylabel "u_y (m)"
 plot "data/B6-remedies.dat" using 1:2 with lines lw 3 lc rgb "gray" title "1D OTM-P1 reference", \
      "data/B6-remedies.dat" using 1:4 with lines lw 1.5 lc rgb "dark-green" title "partially lumped", \
      "data/B6-remedies.dat" using 1:6 with lines lw 1.5 lc rgb "blue" title "lumped", \
-     "data/B6-remedies.dat" using 1:8 with lines lw 1.5 lc rgb "red" title "consistent, deactivation below 1e-2"
+     "data/B6-remedies.dat" using 1:8 with lines lw 1.5 lc rgb "red" title "consistent, deactivation below 1e-2", \
+     "data/B6-remedies.dat" using 1:12 with lines lw 1.5 dt 2 lc rgb "black" title "unified, consistent"
 set ylabel "v_y (m/s)"
 set origin 0, 0.11
 unset key
 plot "data/B6-remedies.dat" using 1:3 with lines lw 3 lc rgb "gray", \
      "data/B6-remedies.dat" using 1:5 with lines lw 1.5 lc rgb "dark-green", \
      "data/B6-remedies.dat" using 1:7 with lines lw 1.5 lc rgb "blue", \
-     "data/B6-remedies.dat" using 1:9 with lines lw 1.5 lc rgb "red"
+     "data/B6-remedies.dat" using 1:9 with lines lw 1.5 lc rgb "red", \
+     "data/B6-remedies.dat" using 1:13 with lines lw 1.5 dt 2 lc rgb "black"
 unset multiplot
 set size 1, 1
 set origin 0, 0

@@ -1,6 +1,7 @@
 #include <mpm_otm/algorithms/advected_grid.h>
 #include <mpm_otm/base/collective_error.h>
 #include <mpm_otm/grid/background_grid.h>
+#include <mpm_otm/material_points/material_points.h>
 #include <mpm_otm/problems/problem.h>
 #include <mpm_otm/shape_functions/shape_functions.h>
 
@@ -10,6 +11,13 @@
 
 namespace MpmOtm
 {
+  template <int dim>
+  AdvectedGrid<dim>::AdvectedGrid(ShapeFunctions<dim> *rebuilt_functions)
+    : rebuilt_functions(rebuilt_functions)
+  {}
+
+
+
   template <int dim>
   bool
   AdvectedGrid<dim>::moves_vertices() const
@@ -91,14 +99,17 @@ namespace MpmOtm
                                        measure(face.n_vertices, face.vertices) /
                                        face.n_vertices;
           for (unsigned int v = 0; v < face.n_vertices; ++v)
-            {
-              const unsigned int i = vertex_functions[face.vertices[v]];
-              for (unsigned int c = 0; c < dim; ++c)
-                {
-                  force[c][i] += share[c];
-                  power += share[c] * velocity[c][i];
-                }
-            }
+            for (unsigned int e = vertex_offsets[face.vertices[v]];
+                 e < vertex_offsets[face.vertices[v] + 1];
+                 ++e)
+              {
+                const unsigned int i = vertex_functions[e];
+                for (unsigned int c = 0; c < dim; ++c)
+                  {
+                    force[c][i] += vertex_weights[e] * share[c];
+                    power += vertex_weights[e] * share[c] * velocity[c][i];
+                  }
+              }
         }
     system.add_external_power(power);
   }
@@ -120,8 +131,13 @@ namespace MpmOtm
     const Utilities::MPI::Partitioner &partitioner = system.partitioner();
     std::vector<unsigned int> position_of_vertex(triangulation->n_vertices(),
                                                  numbers::invalid_unsigned_int);
+    std::vector<types::global_dof_index> functions;
+    std::vector<double>                  weights;
     vertex_positions.clear();
+    vertex_cells.clear();
+    vertex_offsets.assign(1, 0);
     vertex_functions.clear();
+    vertex_weights.clear();
     owned_cell_vertices.clear();
     owned_cells.clear();
     orientations.clear();
@@ -138,16 +154,27 @@ namespace MpmOtm
               {
                 position = vertex_positions.size();
                 vertex_positions.push_back(&cell->vertex(v));
-                const types::global_dof_index function =
-                  shape_functions.vertex_function(cell, v);
-                AssertThrow(function != numbers::invalid_dof_index,
-                            ExcMessage(
-                              "Method = OTM or Unified moves the grid's "
-                              "vertices with the coefficients of the shape "
-                              "functions, which needs exactly one function "
-                              "per vertex (Shape functions = linear)."));
-                vertex_functions.push_back(
-                  partitioner.global_to_local(function));
+                vertex_cells.emplace_back(cell, v);
+                shape_functions.vertex_interpolation(cell,
+                                                     v,
+                                                     functions,
+                                                     weights);
+                for (const auto function : functions)
+                  {
+                    AssertThrow(function != numbers::invalid_dof_index,
+                                ExcMessage(
+                                  "Method = OTM or Unified moves the grid's "
+                                  "vertices with the coefficients of the "
+                                  "shape functions, which needs functions "
+                                  "that belong to the vertices "
+                                  "(Shape functions = linear)."));
+                    vertex_functions.push_back(
+                      partitioner.global_to_local(function));
+                  }
+                vertex_weights.insert(vertex_weights.end(),
+                                      weights.begin(),
+                                      weights.end());
+                vertex_offsets.push_back(vertex_functions.size());
               }
             if (cell->is_locally_owned())
               owned_cell_vertices.push_back(position);
@@ -220,8 +247,8 @@ namespace MpmOtm
   template <int dim>
   void
   AdvectedGrid<dim>::advance(const NodalSystem<dim> &system,
-                             MaterialPoints<dim> &,
-                             const double dt)
+                             MaterialPoints<dim>    &material_points,
+                             const double            dt)
   {
     const double *velocity[dim];
     for (unsigned int c = 0; c < dim; ++c)
@@ -229,8 +256,10 @@ namespace MpmOtm
     for (unsigned int k = 0; k < vertex_positions.size(); ++k)
       {
         moved_positions[k] = *vertex_positions[k];
-        for (unsigned int c = 0; c < dim; ++c)
-          moved_positions[k][c] += dt * velocity[c][vertex_functions[k]];
+        for (unsigned int e = vertex_offsets[k]; e < vertex_offsets[k + 1]; ++e)
+          for (unsigned int c = 0; c < dim; ++c)
+            moved_positions[k][c] +=
+              dt * vertex_weights[e] * velocity[c][vertex_functions[e]];
       }
 
     std::string inverted;
@@ -281,8 +310,61 @@ namespace MpmOtm
       "use Method = MPM (fixed grid).");
 
     for (unsigned int k = 0; k < vertex_positions.size(); ++k)
-      *vertex_positions[k] = moved_positions[k];
+      std::swap(*vertex_positions[k], moved_positions[k]);
     triangulation->signals.mesh_movement();
+    if (rebuilt_functions != nullptr)
+      {
+        // moved_positions now holds the vertices before the step.
+        rebuild_functions(moved_positions);
+        material_points.locate();
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  AdvectedGrid<dim>::read_vertex_weights()
+  {
+    std::vector<types::global_dof_index> functions;
+    std::vector<double>                  weights;
+    for (unsigned int k = 0; k < vertex_cells.size(); ++k)
+      {
+        rebuilt_functions->vertex_interpolation(vertex_cells[k].first,
+                                                vertex_cells[k].second,
+                                                functions,
+                                                weights);
+        AssertDimension(weights.size(),
+                        vertex_offsets[k + 1] - vertex_offsets[k]);
+        std::copy(weights.begin(),
+                  weights.end(),
+                  vertex_weights.begin() + vertex_offsets[k]);
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  AdvectedGrid<dim>::rebuild_functions(const std::vector<Point<dim>> &previous)
+  {
+    const MPI_Comm    comm    = triangulation->get_communicator();
+    const std::string problem = rebuilt_functions->rebuild_on_moved_grid();
+    if (Utilities::MPI::max(problem.empty() ? 0 : 1, comm) == 1)
+      {
+        for (unsigned int k = 0; k < vertex_positions.size(); ++k)
+          *vertex_positions[k] = previous[k];
+        triangulation->signals.mesh_movement();
+        rebuilt_functions->rebuild_on_moved_grid();
+      }
+    read_vertex_weights();
+    stop_if_any_rank_failed(
+      comm,
+      problem,
+      "The shape functions cannot be rebuilt on the moved grid: ",
+      "The grid is left at the start of the step. Reduce Time/Time step; if "
+      "the material deforms more than a grid that moves with it can follow, "
+      "use Method = MPM (fixed grid).");
   }
 
 
@@ -337,6 +419,15 @@ namespace MpmOtm
         *vertex_positions[k] = found->second;
       }
     triangulation->signals.mesh_movement();
+    if (rebuilt_functions != nullptr)
+      {
+        const std::string problem = rebuilt_functions->rebuild_on_moved_grid();
+        AssertThrow(problem.empty(),
+                    ExcMessage("The shape functions cannot be rebuilt on the "
+                               "grid of the checkpoint: " +
+                               problem));
+        read_vertex_weights();
+      }
   }
 
 

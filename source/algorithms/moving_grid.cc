@@ -15,6 +15,8 @@ namespace MpmOtm
       {
         case MovingGrid::vertices:
           return std::make_unique<AdvectedGrid<dim>>();
+        case MovingGrid::rebuilt:
+          return std::make_unique<AdvectedGrid<dim>>(&shape_functions);
         case MovingGrid::knots:
           {
             // Only B-splines say that their functions live on knots.

@@ -66,6 +66,16 @@ namespace MpmOtm
                  "is the unified approach (Method = Unified), "
                  "not OTM. Use Method = Unified, or linear "
                  "functions for OTM."));
+    // Functions rebuilt on the moved grid move the points with a field that
+    // is not the cells' affine map either.
+    AssertThrow(
+      shape_functions.moving_grid() != ShapeFunctions<dim>::MovingGrid::rebuilt,
+      ExcMessage("Method = OTM with Shape functions = " + shape_functions_name +
+                 " is not possible: OTM needs points that keep their place "
+                 "in the moving grid, but these functions move the points "
+                 "with a field that is not the cells' affine map (they are "
+                 "rebuilt on the moved grid every step). Use Method = "
+                 "Unified, or linear functions for OTM."));
     return create_moving_grid(shape_functions, "OTM");
   }
 

@@ -112,8 +112,10 @@ namespace MpmOtm
       {
         if (type == ProjectionSpace::powell_sabin)
           {
-            auto splines = std::make_shared<PowellSabinGeometry>();
-            splines->reinit(triangulation);
+            auto              splines = std::make_shared<PowellSabinGeometry>();
+            const std::string problem = splines->reinit(triangulation);
+            AssertThrow(problem.empty(),
+                        ExcMessage("Powell-Sabin: " + problem));
             geometry = splines;
             fe       = std::make_unique<FE_PowellSabin>(splines);
           }

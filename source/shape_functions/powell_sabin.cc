@@ -68,8 +68,10 @@ namespace MpmOtm
   void
   PowellSabin<2>::initialize(const Triangulation<2> &triangulation)
   {
-    splines = std::make_shared<PowellSabinGeometry>();
-    splines->reinit(triangulation);
+    splines                   = std::make_shared<PowellSabinGeometry>();
+    const std::string problem = splines->reinit(triangulation);
+    AssertThrow(problem.empty(),
+                ExcMessage("Shape functions = Powell-Sabin: " + problem));
     function_element = std::make_unique<FE_PowellSabin>(splines);
     function_dofs.reinit(triangulation);
     function_dofs.distribute_dofs(*function_element);
@@ -322,19 +324,36 @@ namespace MpmOtm
   typename ShapeFunctions<dim>::MovingGrid
   PowellSabin<dim>::moving_grid() const
   {
-    return ShapeFunctions<dim>::MovingGrid::not_supported;
+    return ShapeFunctions<dim>::MovingGrid::rebuilt;
+  }
+
+
+
+  template <int dim>
+  void
+  PowellSabin<dim>::vertex_interpolation(
+    const typename Triangulation<dim>::active_cell_iterator &cell,
+    const unsigned int                                       v,
+    std::vector<types::global_dof_index>                    &functions,
+    std::vector<double>                                     &weights) const
+  {
+    const auto &functions_of_this_cell = cell_functions(cell);
+    functions.assign(functions_of_this_cell.begin() + 3 * v,
+                     functions_of_this_cell.begin() + 3 * v + 3);
+    const auto &alpha = splines->vertex_values(cell->vertex_index(v));
+    weights.assign(alpha.begin(), alpha.end());
   }
 
 
 
   template <int dim>
   std::string
-  PowellSabin<dim>::moving_grid_limitation() const
+  PowellSabin<dim>::rebuild_on_moved_grid()
   {
-    return "Shape functions = Powell-Sabin run with Method = MPM (Update "
-           "scheme = USL or MUSL): their three functions per vertex do not "
-           "move with the vertices, which OTM and the unified approach need "
-           "(a moving triangulation is future work).";
+    if constexpr (dim == 2)
+      return splines->reinit(function_dofs.get_triangulation());
+    else
+      return "Powell-Sabin splines are defined in 2D only.";
   }
 
 
@@ -410,7 +429,7 @@ namespace MpmOtm
 
 #define MPM_OTM_POWELL_SABIN_DESCRIPTION                                     \
   "quadratic Powell-Sabin splines, three per vertex of a triangle grid, C1 " \
-  "(2D, Mesh/Cell type = simplex, Method = MPM)"
+  "(2D, Mesh/Cell type = simplex, Method = MPM or Unified)"
 MPM_OTM_REGISTER_PLUGIN(MpmOtm::ShapeFunctions<1>,
                         MpmOtm::PowellSabin<1>,
                         "Powell-Sabin",

@@ -84,7 +84,8 @@ namespace MpmOtm
 
     /**
      * Convex hull of @p points, counter-clockwise from the lexicographically
-     * smallest point, collinear points left out (Andrew's monotone chain).
+     * smallest point, collinear points left out (Andrew's monotone chain);
+     * x that differ by a relative 1e-12 count as equal.
      */
     std::vector<Point<2>>
     convex_hull(std::vector<Point<2>> points, const double tolerance)
@@ -93,6 +94,22 @@ namespace MpmOtm
         return a[0] < b[0] || (a[0] == b[0] && a[1] < b[1]);
       };
       std::sort(points.begin(), points.end(), less);
+      // Points whose x differ by round-off (a vertical side of a grid that
+      // moved) form one column, ordered by y, as if their x were equal.
+      double extent = 0;
+      for (const auto &p : points)
+        extent = std::max(extent, p.distance(points.front()));
+      for (auto first = points.begin(); first != points.end();)
+        {
+          auto last = first;
+          while (last != points.end() &&
+                 (*last)[0] - (*first)[0] <= 1e-12 * extent)
+            ++last;
+          std::sort(first, last, [](const Point<2> &a, const Point<2> &b) {
+            return a[1] < b[1];
+          });
+          first = last;
+        }
       points.erase(std::unique(points.begin(), points.end()), points.end());
       std::vector<Point<2>> hull;
       const auto            chain = [&](const auto begin, const auto end) {
@@ -120,9 +137,10 @@ namespace MpmOtm
      * use every hull edge through the vertex, the one of smallest area
      * (thesis Eq. 3.25). Candidates are enumerated in a fixed order and a
      * later one wins only if it is smaller by a relative 1e-10, so that the
-     * choice among equal triangles is reproducible.
+     * choice among equal triangles is reproducible. None if the points are
+     * collinear or no candidate contains them.
      */
-    std::array<Point<2>, 3>
+    std::optional<std::array<Point<2>, 3>>
     smallest_control_triangle(const Point<2>              &vertex,
                               const std::vector<Point<2>> &points)
     {
@@ -131,7 +149,8 @@ namespace MpmOtm
         h = std::max(h, p.distance(vertex));
       const std::vector<Point<2>> hull = convex_hull(points, 1e-12 * h * h);
       const unsigned int          m    = hull.size();
-      AssertThrow(m >= 3, ExcInternalError());
+      if (m < 3)
+        return std::nullopt;
       std::vector<Tensor<1, 2>> direction(m);
       std::vector<bool>         required(m);
       Point<2>                  centre;
@@ -209,11 +228,63 @@ namespace MpmOtm
                          *apex + (distance / (u[1] * bisector)) * u[1]}});
             }
 
-      AssertThrow(best_area < std::numeric_limits<double>::infinity(),
-                  ExcMessage("No Powell-Sabin control triangle found for the "
-                             "vertex at " +
-                             Utilities::to_string(vertex[0]) + ", " +
-                             Utilities::to_string(vertex[1]) + "."));
+      if (!(best_area < std::numeric_limits<double>::infinity()))
+        return std::nullopt;
+      return best;
+    }
+
+    /**
+     * The bits q of the points @p t[q] that lie on one of @p lines (unit
+     * tangent and length of the boundary faces through @p vertex).
+     */
+    unsigned int
+    on_boundary(const std::array<Point<2>, 3>                      &t,
+                const Point<2>                                     &vertex,
+                const std::vector<std::pair<Tensor<1, 2>, double>> &lines)
+    {
+      unsigned int bits = 0;
+      for (unsigned int q = 0; q < 3; ++q)
+        for (const auto &[tangent, length] : lines)
+          if (std::abs(cross(tangent, t[q] - vertex)) <= 1e-10 * length)
+            bits |= 1u << q;
+      return bits;
+    }
+
+    /**
+     * The points of @p t in the order that keeps the labels of the control
+     * points on the boundary (@p lines through @p vertex) of @p previous, and
+     * among those orders the one closest to @p previous: the functions of a
+     * vertex then keep their labels while the grid moves, and with them the
+     * boundary conditions set on them.
+     */
+    std::array<Point<2>, 3>
+    closest_labelling(const std::array<Point<2>, 3> &t,
+                      const std::array<Point<2>, 3> &previous,
+                      const Point<2>                &vertex,
+                      const std::vector<std::pair<Tensor<1, 2>, double>> &lines)
+    {
+      const unsigned int previous_bits  = on_boundary(previous, vertex, lines);
+      std::array<unsigned int, 3> order = {{0, 1, 2}};
+      std::array<Point<2>, 3>     best  = t;
+      std::pair<bool, double>     best_key(true,
+                                       std::numeric_limits<double>::infinity());
+      do
+        {
+          const std::array<Point<2>, 3> candidate = {
+            {t[order[0]], t[order[1]], t[order[2]]}};
+          double distance = 0;
+          for (unsigned int q = 0; q < 3; ++q)
+            distance += candidate[q].distance_square(previous[q]);
+          const std::pair<bool, double> key(on_boundary(candidate,
+                                                        vertex,
+                                                        lines) != previous_bits,
+                                            distance);
+          if (key < best_key)
+            {
+              best     = candidate;
+              best_key = key;
+            }
+      } while (std::next_permutation(order.begin(), order.end()));
       return best;
     }
 
@@ -247,12 +318,13 @@ namespace MpmOtm
 
 
 
-  void
+  std::string
   PowellSabinGeometry::reinit(const Triangulation<2> &triangulation)
   {
     AssertThrow(triangulation.all_reference_cells_are_simplex(),
                 ExcMessage("Powell-Sabin splines need a triangulation of "
                            "triangles."));
+    const bool rebuilding = !control_triangles.empty();
 
     // Incentres (thesis 3.5.1): a_k = |edge opposite V_k| / perimeter.
     cell_data.resize(triangulation.n_active_cells());
@@ -365,11 +437,36 @@ namespace MpmOtm
     values_at_vertices.resize(n_vertices);
     std::vector<std::array<Tensor<1, 2>, 3>> vertex_gradients(n_vertices);
     const std::vector<Point<2>> &vertices = triangulation.get_vertices();
+    // On a moved grid: the boundary faces through each vertex, by which
+    // the control points keep their labels.
+    std::vector<std::vector<std::pair<Tensor<1, 2>, double>>> lines(
+      rebuilding ? n_vertices : 0);
+    if (rebuilding)
+      for (const auto &cell : triangulation.active_cell_iterators())
+        if (!cell->is_artificial())
+          for (const auto &face : cell->face_iterators())
+            if (face->at_boundary())
+              for (unsigned int i = 0; i < 2; ++i)
+                lines[face->vertex_index(i)].emplace_back(
+                  (face->vertex(1) - face->vertex(0)) / face->measure(),
+                  face->measure());
     for (unsigned int v = 0; v < n_vertices; ++v)
       if (!points[v].empty())
         {
-          control_triangles[v] =
+          const auto triangle =
             smallest_control_triangle(vertices[v], points[v]);
+          if (!triangle)
+            return "no Powell-Sabin control triangle contains the "
+                   "Powell-Sabin points of the vertex at " +
+                   Utilities::to_string(vertices[v][0]) + ", " +
+                   Utilities::to_string(vertices[v][1]) +
+                   " (its cells are degenerate).";
+          control_triangles[v] = rebuilding ?
+                                   closest_labelling(*triangle,
+                                                     control_triangles[v],
+                                                     vertices[v],
+                                                     lines[v]) :
+                                   *triangle;
           values_at_vertices[v] =
             barycentric(control_triangles[v], vertices[v]);
           vertex_gradients[v] = barycentric_gradients(control_triangles[v]);
@@ -399,6 +496,7 @@ namespace MpmOtm
                 }
             }
         }
+    return {};
   }
 
 

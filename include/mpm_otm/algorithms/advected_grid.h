@@ -18,11 +18,18 @@ namespace MpmOtm
    * the moved grid. Only the vertex positions change: the DoF numbering,
    * partition and index sets stay.
    *
-   * The shape functions must have one function per vertex and no other
-   * (linear Lagrange). Then a material point moved by sum_i phi_i dt v_i
-   * keeps its reference coordinates in its cell (the isoparametric map of
-   * the moved cell at the same reference point), so points never change cell
-   * or rank and no search is needed.
+   * A vertex moves with the field's value there, a combination of
+   * coefficients the family gives (ShapeFunctions::vertex_interpolation()).
+   * With one function per vertex and no other (linear Lagrange) a material
+   * point moved by sum_i phi_i dt v_i keeps its reference coordinates in its
+   * cell (the isoparametric map of the moved cell at the same reference
+   * point), so points never change cell or rank and no search is needed.
+   * Families with several functions per vertex (Powell-Sabin,
+   * MovingGrid::rebuilt) are rebuilt on the moved grid every step, after
+   * which the points, which moved with the family's field and not with the
+   * cells' affine map, are located anew; a family that cannot be rebuilt on
+   * the moved vertices (no control triangle) stops the run with the grid
+   * left as it was.
    *
    * Before the vertices move, every locally owned cell is checked: a cell
    * whose Jacobian would change sign at one of its vertices, or that would
@@ -32,15 +39,22 @@ namespace MpmOtm
    *
    * The grid covers the material only, so its boundary is the material
    * boundary: a traction acts on the boundary faces of the moved grid,
-   * f_i += t |face| / n_face_vertices at each vertex of the face (exact for
-   * linear functions on simplex faces and parallelogram faces), with the
-   * current face measure (a Cauchy traction). In 1D the end vertex carries
+   * t |face| / n_face_vertices at each vertex of the face (exact for linear
+   * functions on simplex faces and parallelogram faces), with the current
+   * face measure (a Cauchy traction), shared among the vertex's functions
+   * with the weights of its interpolation. In 1D the end vertex carries
    * the traction, the journal's delta(x - l) of Sect. 8.2.
    */
   template <int dim>
   class AdvectedGrid : public GridMotion<dim>
   {
   public:
+    /**
+     * A grid whose vertices carry the functions; with @p rebuilt_functions
+     * (MovingGrid::rebuilt) that family is rebuilt after every move.
+     */
+    explicit AdvectedGrid(ShapeFunctions<dim> *rebuilt_functions = nullptr);
+
     bool
     moves_vertices() const override;
 
@@ -103,11 +117,35 @@ namespace MpmOtm
     vertex_index(const unsigned int k) const;
 
     /**
-     * Each vertex of a locally owned or ghost cell once: where its position
-     * is stored and the local index of its shape function.
+     * Read the weights of every vertex's interpolation from the family
+     * (they change when it is rebuilt).
+     */
+    void
+    read_vertex_weights();
+
+    /**
+     * Rebuild the family on the current vertices; on a problem on any rank,
+     * put the vertices back to @p previous, rebuild there and stop the run.
+     * Collective.
+     */
+    void
+    rebuild_functions(const std::vector<Point<dim>> &previous);
+
+    ShapeFunctions<dim> *rebuilt_functions;
+
+    /**
+     * Each vertex k of a locally owned or ghost cell once: where its
+     * position is stored, a cell and its number there, and the local indices
+     * and weights of the coefficients whose combination is the field's
+     * value there (vertex_offsets[k] to vertex_offsets[k + 1]).
      */
     std::vector<Point<dim> *> vertex_positions;
+    std::vector<std::pair<typename Triangulation<dim>::active_cell_iterator,
+                          unsigned int>>
+                              vertex_cells;
+    std::vector<unsigned int> vertex_offsets;
     std::vector<unsigned int> vertex_functions;
+    std::vector<double>       vertex_weights;
 
     /**
      * For each locally owned cell: its indices into vertex_positions

@@ -11,7 +11,8 @@ namespace MpmOtm
   /**
    * The grid motion that makes @p shape_functions follow the material, as
    * the family says (ShapeFunctions::moving_grid()): advected vertices
-   * (AdvectedGrid) or knots (AdvectedKnots). For a family that cannot
+   * (AdvectedGrid), vertices with functions rebuilt on the moved grid
+   * (AdvectedGrid too) or knots (AdvectedKnots). For a family that cannot
    * follow a moving grid, stops with its own message; @p method names the
    * method that asked for the moving grid. The only place that knows which
    * grid motion belongs to which family.

@@ -119,14 +119,31 @@ namespace MpmOtm
     is_linearly_complete() const override;
 
     /**
-     * MovingGrid::not_supported (yet): the functions would have to be
-     * rebuilt on the moved triangulation every step.
+     * MovingGrid::rebuilt: on a moving grid (Method = Unified) the vertices
+     * move with the field's values there and the functions are rebuilt on
+     * the moved triangulation every step.
      */
     typename ShapeFunctions<dim>::MovingGrid
     moving_grid() const override;
 
+    /**
+     * The vertex's three functions with weights alpha_v^q = lambda_q(V):
+     * the field's value at the vertex (the other vertices' functions vanish
+     * there).
+     */
+    void
+    vertex_interpolation(
+      const typename Triangulation<dim>::active_cell_iterator &cell,
+      const unsigned int                                       v,
+      std::vector<types::global_dof_index>                    &functions,
+      std::vector<double> &weights) const override;
+
+    /**
+     * Build split points, control triangles and ordinates anew on the moved
+     * vertices (PowellSabinGeometry::reinit()); numbering and supports stay.
+     */
     std::string
-    moving_grid_limitation() const override;
+    rebuild_on_moved_grid() override;
 
     /**
      * True: write_basis_picture() draws the three functions of a vertex.

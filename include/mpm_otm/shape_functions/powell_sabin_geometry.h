@@ -6,6 +6,7 @@
 #include <deal.II/grid/tria.h>
 
 #include <array>
+#include <string>
 #include <vector>
 
 namespace MpmOtm
@@ -57,9 +58,13 @@ namespace MpmOtm
 
     /**
      * Build the refinement and the functions on @p triangulation (all
-     * triangles). Stops with a message if a vertex has no control triangle.
+     * triangles); again after its vertices moved (the unified approach),
+     * where each vertex's control points keep their labels as far as
+     * possible: those on the boundary first, then the nearest. Returns an
+     * empty string, or which vertex has no control triangle (a degenerate
+     * grid).
      */
-    void
+    std::string
     reinit(const Triangulation<2> &triangulation);
 
     /**

@@ -117,6 +117,13 @@ namespace MpmOtm
        */
       knots,
       /**
+       * Functions of a triangulation whose vertices move with the field's
+       * values there (vertex_interpolation()), rebuilt on the moved grid
+       * (rebuild_on_moved_grid()); the material points are then located
+       * anew (Powell-Sabin splines).
+       */
+      rebuilt,
+      /**
        * The functions cannot follow a moving grid;
        * moving_grid_limitation() says why.
        */
@@ -131,6 +138,36 @@ namespace MpmOtm
     moving_grid() const
     {
       return MovingGrid::vertices;
+    }
+
+    /**
+     * The field's value at vertex @p v of @p cell as a combination of
+     * coefficients: the functions @p functions (global indices) with the
+     * weights @p weights. For families whose grid moves with its vertices
+     * (MovingGrid::vertices and rebuilt); by default vertex_function() with
+     * weight 1.
+     */
+    virtual void
+    vertex_interpolation(
+      const typename Triangulation<dim>::active_cell_iterator &cell,
+      const unsigned int                                       v,
+      std::vector<types::global_dof_index>                    &functions,
+      std::vector<double>                                     &weights) const
+    {
+      functions.assign(1, vertex_function(cell, v));
+      weights.assign(1, 1.);
+    }
+
+    /**
+     * For MovingGrid::rebuilt: build the functions anew on the grid's moved
+     * vertices (numbering, distribution and supports stay). Not
+     * collective. Returns an empty string, or what made the functions
+     * impossible to build (a vertex and why), for a message.
+     */
+    virtual std::string
+    rebuild_on_moved_grid()
+    {
+      return {};
     }
 
     /**
