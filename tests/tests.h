@@ -153,6 +153,25 @@ namespace MpmOtmTests
                                  "end\n",
                                directory);
   }
+
+  /**
+   * Value and gradient of the quadratic number @p i of 1, x, y, x^2, xy,
+   * y^2 at @p x (the monomials the Powell-Sabin tests reproduce).
+   */
+  inline std::pair<double, dealii::Tensor<1, 2>>
+  quadratic(const unsigned int i, const dealii::Point<2> &x)
+  {
+    const double values[6] =
+      {1., x[0], x[1], x[0] * x[0], x[0] * x[1], x[1] * x[1]};
+    const double gradients[6][2] = {{0., 0.},
+                                    {1., 0.},
+                                    {0., 1.},
+                                    {2. * x[0], 0.},
+                                    {x[1], x[0]},
+                                    {0., 2. * x[1]}};
+    return {values[i],
+            dealii::Tensor<1, 2>({gradients[i][0], gradients[i][1]})};
+  }
 } // namespace MpmOtmTests
 
 #endif

@@ -147,11 +147,13 @@ set ylabel "u_x (m)"
 set key bottom left
 plot "data/B5-large.dat" using 1:2 with lines lw 3 lc rgb "gray" title "1D OTM-P1 reference", \
      "data/B5-large.dat" using 1:4 with lines lw 1.5 lc rgb "red" title "mpm-otm, Lagrange MPM 16 x 1 blocks, 56 points per triangle", \
-     "data/B5-large.dat" using 1:6 with lines lw 1.5 dt 2 lc rgb "dark-green" title "mpm-otm, Powell-Sabin MPM 8 x 1 blocks, 20 points per triangle"
+     "data/B5-large.dat" using 1:6 with lines lw 1.5 dt 2 lc rgb "dark-green" title "mpm-otm, Powell-Sabin MPM 8 x 1 blocks, 20 points per triangle", \
+     "data/B5-large.dat" using 1:8 with lines lw 1.5 dt 3 lc rgb "black" title "mpm-otm, Powell-Sabin, unified approach, same grid"
 set ylabel "v_x (m/s)"
 plot "data/B5-large.dat" using 1:3 with lines lw 3 lc rgb "gray" title "1D OTM-P1 reference", \
      "data/B5-large.dat" using 1:5 with lines lw 1.5 lc rgb "red" title "mpm-otm, Lagrange MPM", \
-     "data/B5-large.dat" using 1:7 with lines lw 1.5 dt 2 lc rgb "dark-green" title "mpm-otm, Powell-Sabin MPM"
+     "data/B5-large.dat" using 1:7 with lines lw 1.5 dt 2 lc rgb "dark-green" title "mpm-otm, Powell-Sabin MPM", \
+     "data/B5-large.dat" using 1:9 with lines lw 1.5 dt 3 lc rgb "black" title "mpm-otm, Powell-Sabin, unified approach"
 unset multiplot
 
 set output "figures/B6-large.png"
@@ -159,11 +161,13 @@ set multiplot layout 2,1 title "B6 large deformation: top of the soil column (th
 set ylabel "u_y (m)"
 plot "data/B6-large.dat" using 1:2 with lines lw 3 lc rgb "gray" title "1D OTM-P1 reference", \
      "data/B6-large.dat" using 1:4 with lines lw 1.5 lc rgb "red" title "mpm-otm, Lagrange MPM 1 x 4 blocks, 72 points per triangle", \
-     "data/B6-large.dat" using 1:6 with lines lw 1.5 dt 2 lc rgb "dark-green" title "mpm-otm, Powell-Sabin MPM, same grid"
+     "data/B6-large.dat" using 1:6 with lines lw 1.5 dt 2 lc rgb "dark-green" title "mpm-otm, Powell-Sabin MPM, same grid", \
+     "data/B6-large.dat" using 1:8 with lines lw 1.5 dt 3 lc rgb "black" title "mpm-otm, Powell-Sabin, unified approach, same grid"
 set ylabel "v_y (m/s)"
 plot "data/B6-large.dat" using 1:3 with lines lw 3 lc rgb "gray" title "1D OTM-P1 reference", \
      "data/B6-large.dat" using 1:5 with lines lw 1.5 lc rgb "red" title "mpm-otm, Lagrange MPM", \
-     "data/B6-large.dat" using 1:7 with lines lw 1.5 dt 2 lc rgb "dark-green" title "mpm-otm, Powell-Sabin MPM"
+     "data/B6-large.dat" using 1:7 with lines lw 1.5 dt 2 lc rgb "dark-green" title "mpm-otm, Powell-Sabin MPM", \
+     "data/B6-large.dat" using 1:9 with lines lw 1.5 dt 3 lc rgb "black" title "mpm-otm, Powell-Sabin, unified approach"
 unset multiplot
 
 set output "figures/B6-remedies.png"

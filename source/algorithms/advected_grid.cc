@@ -1,3 +1,5 @@
+#include <deal.II/grid/grid_tools.h>
+
 #include <mpm_otm/algorithms/advected_grid.h>
 #include <mpm_otm/base/collective_error.h>
 #include <mpm_otm/grid/background_grid.h>
@@ -129,8 +131,9 @@ namespace MpmOtm
     triangulation                                  = &grid.triangulation();
     background                                     = &grid;
     const Utilities::MPI::Partitioner &partitioner = system.partitioner();
-    std::vector<unsigned int> position_of_vertex(triangulation->n_vertices(),
-                                                 numbers::invalid_unsigned_int);
+    position_of_vertex.assign(triangulation->n_vertices(),
+                              numbers::invalid_unsigned_int);
+    of_owned_cell.clear();
     std::vector<types::global_dof_index> functions;
     std::vector<double>                  weights;
     vertex_positions.clear();
@@ -175,9 +178,13 @@ namespace MpmOtm
                                       weights.begin(),
                                       weights.end());
                 vertex_offsets.push_back(vertex_functions.size());
+                of_owned_cell.push_back(false);
               }
             if (cell->is_locally_owned())
-              owned_cell_vertices.push_back(position);
+              {
+                owned_cell_vertices.push_back(position);
+                of_owned_cell[position] = true;
+              }
           }
         if (cell->is_locally_owned())
           {
@@ -261,6 +268,9 @@ namespace MpmOtm
             moved_positions[k][c] +=
               dt * vertex_weights[e] * velocity[c][vertex_functions[e]];
       }
+    if (rebuilt_functions != nullptr &&
+        Utilities::MPI::n_mpi_processes(triangulation->get_communicator()) > 1)
+      take_ghost_vertices_from_owners();
 
     std::string inverted;
     for (unsigned int k = 0; k < owned_cells.size() && inverted.empty(); ++k)
@@ -318,6 +328,35 @@ namespace MpmOtm
         rebuild_functions(moved_positions);
         material_points.locate();
       }
+  }
+
+
+
+  template <int dim>
+  void
+  AdvectedGrid<dim>::take_ghost_vertices_from_owners()
+  {
+    using Cell = typename Triangulation<dim>::active_cell_iterator;
+    GridTools::exchange_cell_data_to_ghosts<std::vector<double>,
+                                            Triangulation<dim>>(
+      *triangulation,
+      [&](const Cell &cell) {
+        std::vector<double> corners;
+        for (const unsigned int v : cell->vertex_indices())
+          for (unsigned int d = 0; d < dim; ++d)
+            corners.push_back(
+              moved_positions[position_of_vertex[cell->vertex_index(v)]][d]);
+        return std_cxx17::optional<std::vector<double>>(corners);
+      },
+      [&](const Cell &cell, const std::vector<double> &corners) {
+        for (const unsigned int v : cell->vertex_indices())
+          {
+            const unsigned int k = position_of_vertex[cell->vertex_index(v)];
+            if (!of_owned_cell[k])
+              for (unsigned int d = 0; d < dim; ++d)
+                moved_positions[k][d] = corners[v * dim + d];
+          }
+      });
   }
 
 

@@ -84,8 +84,12 @@ namespace MpmOtm
 
     /**
      * Convex hull of @p points, counter-clockwise from the lexicographically
-     * smallest point, collinear points left out (Andrew's monotone chain);
-     * x that differ by a relative 1e-12 count as equal.
+     * smallest of its corners (Andrew's monotone chain with exact
+     * orientation tests), then without the corners that lie within
+     * @p tolerance (a cross product) of the line through their neighbours.
+     * The tolerance is applied to the finished polygon only: inside the
+     * chain it would make the result depend on the order of points whose x
+     * differ by round-off, as on a vertical line of a grid that moved.
      */
     std::vector<Point<2>>
     convex_hull(std::vector<Point<2>> points, const double tolerance)
@@ -94,22 +98,6 @@ namespace MpmOtm
         return a[0] < b[0] || (a[0] == b[0] && a[1] < b[1]);
       };
       std::sort(points.begin(), points.end(), less);
-      // Points whose x differ by round-off (a vertical side of a grid that
-      // moved) form one column, ordered by y, as if their x were equal.
-      double extent = 0;
-      for (const auto &p : points)
-        extent = std::max(extent, p.distance(points.front()));
-      for (auto first = points.begin(); first != points.end();)
-        {
-          auto last = first;
-          while (last != points.end() &&
-                 (*last)[0] - (*first)[0] <= 1e-12 * extent)
-            ++last;
-          std::sort(first, last, [](const Point<2> &a, const Point<2> &b) {
-            return a[1] < b[1];
-          });
-          first = last;
-        }
       points.erase(std::unique(points.begin(), points.end()), points.end());
       std::vector<Point<2>> hull;
       const auto            chain = [&](const auto begin, const auto end) {
@@ -118,7 +106,7 @@ namespace MpmOtm
           {
             while (hull.size() >= start + 2 &&
                    cross(hull.back() - hull[hull.size() - 2],
-                         *p - hull[hull.size() - 2]) <= tolerance)
+                         *p - hull[hull.size() - 2]) <= 0.)
               hull.pop_back();
             hull.push_back(*p);
           }
@@ -126,6 +114,27 @@ namespace MpmOtm
       };
       chain(points.begin(), points.end());
       chain(points.rbegin(), points.rend());
+
+      for (bool removed = true; removed && hull.size() > 3;)
+        {
+          removed = false;
+          for (unsigned int i = 0; i < hull.size() && hull.size() > 3; ++i)
+            {
+              const Point<2> &before =
+                hull[(i + hull.size() - 1) % hull.size()];
+              const Point<2> &after = hull[(i + 1) % hull.size()];
+              if (std::abs(cross(hull[i] - before, after - before)) <=
+                  tolerance)
+                {
+                  hull.erase(hull.begin() + i);
+                  removed = true;
+                  break;
+                }
+            }
+        }
+      std::rotate(hull.begin(),
+                  std::min_element(hull.begin(), hull.end(), less),
+                  hull.end());
       return hull;
     }
 
@@ -450,17 +459,27 @@ namespace MpmOtm
                 lines[face->vertex_index(i)].emplace_back(
                   (face->vertex(1) - face->vertex(0)) / face->measure(),
                   face->measure());
+    // The vertices of locally owned cells, whose cells are all present: a
+    // vertex of ghost cells only may lack Powell-Sabin points of the cells
+    // beyond the ghost layer, and its functions are not evaluated here.
+    std::vector<bool> complete(n_vertices, false);
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const unsigned int v : cell->vertex_indices())
+          complete[cell->vertex_index(v)] = true;
     for (unsigned int v = 0; v < n_vertices; ++v)
       if (!points[v].empty())
         {
           const auto triangle =
             smallest_control_triangle(vertices[v], points[v]);
-          if (!triangle)
+          if (!triangle && complete[v])
             return "no Powell-Sabin control triangle contains the "
                    "Powell-Sabin points of the vertex at " +
                    Utilities::to_string(vertices[v][0]) + ", " +
                    Utilities::to_string(vertices[v][1]) +
                    " (its cells are degenerate).";
+          if (!triangle)
+            continue;
           control_triangles[v] = rebuilding ?
                                    closest_labelling(*triangle,
                                                      control_triangles[v],

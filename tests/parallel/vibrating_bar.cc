@@ -3,7 +3,8 @@
 // with MPM and with the moving grid of OTM (2D) and the unified approach
 // (3D), with quadratic B-splines (BSMPM in 2D and 3D, the unified approach
 // with moving knots in 2D), and on fully distributed grids: triangles
-// (MPM, OTM, and MPM with Powell-Sabin splines), tetrahedra (MPM) and 1D
+// (MPM, OTM, and MPM and the unified approach with Powell-Sabin splines),
+// tetrahedra (MPM) and 1D
 // intervals (MPM, OTM, the unified approach with moving B-spline knots). Each
 // runs once on MPI_COMM_WORLD (2 ranks) and once on rank 0 alone; the error
 // norms against the exact solution and the energies agree to round-off, and the
@@ -119,6 +120,12 @@ end
   compare<2>("2D Powell-Sabin",
              common + bar_2d + simplices +
                "set Shape functions = Powell-Sabin\n");
+  // The unified approach with Powell-Sabin splines: the vertices of ghost
+  // cells only take the positions their owners computed.
+  compare<2>("2D Unified Powell-Sabin",
+             common + bar_2d + simplices +
+               "set Shape functions = Powell-Sabin\n"
+               "set Method = Unified\n");
   // 1D: a fully distributed line of intervals.
   const std::string bar_1d = R"(
 set Dimension = 1

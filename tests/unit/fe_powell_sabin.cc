@@ -44,24 +44,6 @@ using namespace MpmOtmTests;
 namespace
 {
   /**
-   * Value and gradient of the quadratic number @p i of 1, x, y, x^2, xy,
-   * y^2 at @p x.
-   */
-  std::pair<double, Tensor<1, 2>>
-  quadratic(const unsigned int i, const Point<2> &x)
-  {
-    const double values[6] =
-      {1., x[0], x[1], x[0] * x[0], x[0] * x[1], x[1] * x[1]};
-    const double gradients[6][2] = {{0., 0.},
-                                    {1., 0.},
-                                    {0., 1.},
-                                    {2. * x[0], 0.},
-                                    {x[1], x[0]},
-                                    {0., 2. * x[1]}};
-    return {values[i], Tensor<1, 2>({gradients[i][0], gradients[i][1]})};
-  }
-
-  /**
    * The coefficients of a quadratic with value and gradient @p g at every
    * vertex: g(V) + grad g(V) . (Q - V) for the control point Q of each of
    * V's functions.

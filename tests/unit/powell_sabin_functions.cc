@@ -139,23 +139,6 @@ reference_point(const Cell &cell, const Point<2> &x)
 }
 
 /**
- * The quadratic g_i of 1, x, y, x^2, xy, y^2 and its gradient.
- */
-std::pair<double, Tensor<1, 2>>
-quadratic(const unsigned int i, const Point<2> &x)
-{
-  const double values[6] =
-    {1., x[0], x[1], x[0] * x[0], x[0] * x[1], x[1] * x[1]};
-  const double gradients[6][2] = {{0., 0.},
-                                  {1., 0.},
-                                  {0., 1.},
-                                  {2. * x[0], 0.},
-                                  {x[1], x[0]},
-                                  {0., 2. * x[1]}};
-  return {values[i], Tensor<1, 2>({gradients[i][0], gradients[i][1]})};
-}
-
-/**
  * Coefficients of the quadratic g_i, by global function index.
  */
 std::vector<double>

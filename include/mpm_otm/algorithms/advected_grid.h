@@ -124,6 +124,16 @@ namespace MpmOtm
     read_vertex_weights();
 
     /**
+     * For a rebuilt family on several ranks: give the vertices that belong to
+     * ghost cells only the moved positions their cells' owners computed in
+     * moved_positions. A rank's weights of such a vertex come from an
+     * incomplete control triangle (one ghost layer holds only some of the
+     * vertex's cells), the owners' from a complete one. Collective.
+     */
+    void
+    take_ghost_vertices_from_owners();
+
+    /**
      * Rebuild the family on the current vertices; on a problem on any rank,
      * put the vertices back to @p previous, rebuild there and stop the run.
      * Collective.
@@ -144,6 +154,10 @@ namespace MpmOtm
                           unsigned int>>
                               vertex_cells;
     std::vector<unsigned int> vertex_offsets;
+    /// The position k of each vertex (by its index in the triangulation),
+    /// and whether vertex k belongs to a locally owned cell.
+    std::vector<unsigned int> position_of_vertex;
+    std::vector<bool>         of_owned_cell;
     std::vector<unsigned int> vertex_functions;
     std::vector<double>       vertex_weights;
 
