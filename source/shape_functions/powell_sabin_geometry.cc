@@ -83,8 +83,8 @@ namespace MpmOtm
     }
 
     /**
-     * Convex hull of @p points, counter-clockwise from the lexicographically
-     * smallest of its corners (Andrew's monotone chain with exact
+     * Convex hull of @p points, counter-clockwise from the lowest of its
+     * leftmost corners (Andrew's monotone chain with exact
      * orientation tests), then without the corners that lie within
      * @p tolerance (a cross product) of the line through their neighbours.
      * The tolerance is applied to the finished polygon only: inside the
@@ -132,9 +132,22 @@ namespace MpmOtm
                 }
             }
         }
-      std::rotate(hull.begin(),
-                  std::min_element(hull.begin(), hull.end(), less),
-                  hull.end());
+      // Start at the lowest of the leftmost corners, with x that differ by
+      // round-off counted as equal: the order of the corners decides among
+      // candidate triangles of equal area, and must not change when the
+      // grid only moved.
+      double extent = 0;
+      for (const auto &p : hull)
+        extent = std::max(extent, p.distance(hull.front()));
+      double left = hull.front()[0];
+      for (const auto &p : hull)
+        left = std::min(left, p[0]);
+      auto start = hull.end();
+      for (auto p = hull.begin(); p != hull.end(); ++p)
+        if ((*p)[0] <= left + 1e-9 * extent &&
+            (start == hull.end() || (*p)[1] < (*start)[1]))
+          start = p;
+      std::rotate(hull.begin(), start, hull.end());
       return hull;
     }
 
