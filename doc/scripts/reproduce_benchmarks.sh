@@ -248,10 +248,10 @@ track middle 1e-3 12.5 > mpm.dat
 # middle are 0.156 from it, where u differs from the middle's by 2e-4.
 run B5-bar-2d-large-powell-sabin.prm ""
 track middle 1e-3 12.5 0.16 > powell-sabin.dat
-run B5-bar-2d-large-powell-sabin.prm "set Method = Unified"
+run B5-bar-2d-large-powell-sabin-unified.prm ""
 track middle 1e-3 12.5 0.16 > unified.dat
 {
-  echo "# time  u_reference  v_reference  u_MPM  v_MPM  u_PS_MPM  v_PS_MPM  (middle of the bar; prm/B5-bar-large-reference-1d.prm, prm/B5-bar-2d-large.prm, prm/B5-bar-2d-large-powell-sabin.prm, then u_unified_PS v_unified_PS: the Powell-Sabin run with Method = Unified)"
+  echo "# time  u_reference  v_reference  u_MPM  v_MPM  u_PS_MPM  v_PS_MPM  (middle of the bar; prm/B5-bar-large-reference-1d.prm, prm/B5-bar-2d-large.prm, prm/B5-bar-2d-large-powell-sabin.prm, then u_unified_PS v_unified_PS: prm/B5-bar-2d-large-powell-sabin-unified.prm)"
   paste -d' ' reference.dat <(cut -d' ' -f2,3 mpm.dat) <(cut -d' ' -f2,3 powell-sabin.dat) <(cut -d' ' -f2,3 unified.dat)
 } > "$data/B5-large.dat"
 run B6-soil-column-large-reference-1d.prm ""
@@ -260,10 +260,10 @@ run B6-soil-column-2d-large.prm ""
 track top 1e-4 > mpm.dat
 run B6-soil-column-2d-large-powell-sabin.prm ""
 track top 1e-4 > powell-sabin.dat
-run B6-soil-column-2d-large-powell-sabin.prm "set Method = Unified"
+run B6-soil-column-2d-large-powell-sabin-unified.prm ""
 track top 1e-4 > unified.dat
 {
-  echo "# time  u_reference  v_reference  u_MPM  v_MPM  u_PS_MPM  v_PS_MPM  (top of the column; prm/B6-soil-column-large-reference-1d.prm, prm/B6-soil-column-2d-large.prm, prm/B6-soil-column-2d-large-powell-sabin.prm, then u_unified_PS v_unified_PS: the Powell-Sabin run with Method = Unified)"
+  echo "# time  u_reference  v_reference  u_MPM  v_MPM  u_PS_MPM  v_PS_MPM  (top of the column; prm/B6-soil-column-large-reference-1d.prm, prm/B6-soil-column-2d-large.prm, prm/B6-soil-column-2d-large-powell-sabin.prm, then u_unified_PS v_unified_PS: prm/B6-soil-column-2d-large-powell-sabin-unified.prm)"
   paste -d' ' reference.dat <(cut -d' ' -f2,3 mpm.dat) <(cut -d' ' -f2,3 powell-sabin.dat) <(cut -d' ' -f2,3 unified.dat)
 } > "$data/B6-large.dat"
 

@@ -460,11 +460,13 @@ namespace MpmOtm
     triangulation->signals.mesh_movement();
     if (rebuilt_functions != nullptr)
       {
-        const std::string problem = rebuilt_functions->rebuild_on_moved_grid();
-        AssertThrow(problem.empty(),
-                    ExcMessage("The shape functions cannot be rebuilt on the "
-                               "grid of the checkpoint: " +
-                               problem));
+        // Collective, so that a rank that meets a problem does not leave the
+        // others waiting.
+        stop_if_any_rank_failed(triangulation->get_communicator(),
+                                rebuilt_functions->rebuild_on_moved_grid(),
+                                "The shape functions cannot be rebuilt on the "
+                                "grid of the checkpoint: ",
+                                "");
         read_vertex_weights();
       }
   }
