@@ -2,16 +2,19 @@
 # Strong scaling on this machine: the 2D bar of prm/performance-bar-2d.prm
 # (USL, lumped mass, 100 steps) with about 1e6 material points, on 1 and 2
 # MPI ranks, for linear functions on quadrilaterals (p4est) and on
-# triangles (a fully distributed grid partitioned by METIS) and quadratic
-# B-splines. Runs alternate between 1 and 2 ranks, REPEAT times each (the
+# triangles (a fully distributed grid partitioned by METIS), quadratic
+# B-splines, max-ent functions (d_max = 2) and Powell-Sabin splines. Runs
+# alternate between 1 and 2 ranks, REPEAT times each (the
 # machine is shared: compare runs of one series only). Prints a Markdown
 # table with the seconds of the time loop (from the run's own wall-time
 # lines, so set-up and output are excluded) and the speed-up.
-# Usage: scripts/benchmark_strong_scaling.sh [path to mpm-otm] [REPEAT]
+# Usage: scripts/benchmark_strong_scaling.sh [path to mpm-otm] [REPEAT] [ROWS]
+# (ROWS: a grep pattern that selects rows by label, e.g. 'max-ent').
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 exe=${1:-$root/build-release/mpm-otm}
 repeat=${2:-2}
+rows=${3:-.}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cd "$work"
@@ -31,6 +34,7 @@ run() {
 echo "| functions and grid | material points | 1 rank (s) | 2 ranks (s) | speed-up |"
 echo "|---|---|---|---|---|"
 while IFS='|' read -r label nx ny extra; do
+  echo "$label" | grep -q -- "$rows" || continue
   one="" two=""
   for _ in $(seq "$repeat"); do
     read -r points seconds < <(run 1 "$nx" "$ny" "$extra")
@@ -51,6 +55,8 @@ done <<'EOF'
 linear, quadrilaterals|1000|250|
 linear, triangles|1000|250|subsection Mesh\n set Cell type = simplex\nend
 quadratic B-splines, quadrilaterals|1000|250|set Shape functions = B-spline
+max-ent, quadrilaterals|1000|250|set Shape functions = max-ent
+Powell-Sabin, triangles|1000|250|subsection Mesh\n set Cell type = simplex\nend\nset Shape functions = Powell-Sabin
 EOF
 echo
 echo "(speed-up: best 1-rank time over best 2-rank time)"

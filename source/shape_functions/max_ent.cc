@@ -1,9 +1,13 @@
 #include <deal.II/base/bounding_box.h>
+#include <deal.II/base/mpi.h>
 #include <deal.II/boost_adaptors/bounding_box.h>
 #include <deal.II/boost_adaptors/point.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/grid/grid_tools.h>
 #include <deal.II/numerics/rtree.h>
 #include <deal.II/particles/particle_handler.h>
 
+#include <mpm_otm/base/collective_error.h>
 #include <mpm_otm/base/plugins.h>
 #include <mpm_otm/grid/background_grid.h>
 #include <mpm_otm/material_points/material_points.h>
@@ -12,6 +16,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <sstream>
 
 namespace MpmOtm
@@ -68,6 +73,18 @@ namespace MpmOtm
                       "distance from node i to its nearest other node). "
                       "Typical values 2 to 4; larger values smooth more and "
                       "cost more (Shape functions = max-ent).");
+    prm.declare_entry(
+      "Max-ent halo factor",
+      "1.5",
+      Patterns::Double(1.),
+      "Under MPI, each rank keeps the nodes of other ranks within this "
+      "factor times the largest support radius d_max zeta_i of its cells "
+      "at set-up (Shape functions = max-ent). 1 suffices on a fixed grid "
+      "(MPM). When the nodes move with the material (OTM), the margin, "
+      "(factor - 1) times that radius, is how far the nodes may move "
+      "relative to each other before a rank could miss a node that reaches "
+      "its points; the run then stops and asks for a larger factor. Larger "
+      "factors exchange more nodes.");
   }
 
 
@@ -75,6 +92,7 @@ namespace MpmOtm
   template <int dim>
   MaxEnt<dim>::MaxEnt(const double support_factor)
     : support_factor(support_factor)
+    , halo_factor(1.5)
   {}
 
 
@@ -89,6 +107,7 @@ namespace MpmOtm
   MaxEnt<dim>::parse_parameters(ParameterHandler &prm)
   {
     support_factor = prm.get_double("Max-ent support factor");
+    halo_factor    = prm.get_double("Max-ent halo factor");
   }
 
 
@@ -97,94 +116,497 @@ namespace MpmOtm
   void
   MaxEnt<dim>::initialize(const BackgroundGrid<dim> &grid)
   {
-    AssertThrow(Utilities::MPI::n_mpi_processes(
-                  grid.triangulation().get_communicator()) == 1,
-                ExcMessage("Shape functions = max-ent run on one MPI rank "
-                           "only so far: their supports reach beyond the "
-                           "ghost cells. Run without mpirun."));
     vertex_numbering.initialize(grid);
+    find_node_cloud();
     nodes.clear();
+    search_tree.reset();
     update_nodes();
+  }
+
+
+
+  namespace
+  {
+    /**
+     * The squared distance from @p x to the box @p box (0 inside).
+     */
+    template <int dim>
+    double
+    squared_distance_to_box(const Point<dim> &x, const BoundingBox<dim> &box)
+    {
+      double result = 0;
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          const double outside = std::max(
+            {box.lower_bound(d) - x[d], x[d] - box.upper_bound(d), 0.});
+          result += outside * outside;
+        }
+      return result;
+    }
+
+
+
+    /**
+     * @p box widened by @p margin on every side.
+     */
+    template <int dim>
+    BoundingBox<dim>
+    widened(const BoundingBox<dim> &box, const double margin)
+    {
+      auto corners = box.get_boundary_points();
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          corners.first[d] -= margin;
+          corners.second[d] += margin;
+        }
+      return BoundingBox<dim>(corners);
+    }
+
+
+
+    /**
+     * A few boxes that together cover the locally owned cells of
+     * @p dofs: the cells' bounding boxes merged per bin of a uniform
+     * subdivision of their joint bounding box (at most 8^dim bins in 1D and
+     * 2D, 4^3 in 3D).
+     */
+    template <int dim>
+    std::vector<BoundingBox<dim>>
+    covering_boxes(const DoFHandler<dim> &dofs)
+    {
+      std::vector<BoundingBox<dim>> cell_boxes;
+      for (const auto &cell : dofs.active_cell_iterators())
+        if (cell->is_locally_owned())
+          cell_boxes.push_back(cell->bounding_box());
+      if (cell_boxes.empty())
+        return {};
+      BoundingBox<dim> all = cell_boxes[0];
+      for (const auto &box : cell_boxes)
+        all.merge_with(box);
+      const unsigned int bins_per_direction = (dim == 3) ? 4 : 8;
+      std::map<unsigned int, BoundingBox<dim>> bins;
+      for (const auto &box : cell_boxes)
+        {
+          const Point<dim> centre = box.center();
+          unsigned int     bin    = 0;
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              const double width = all.side_length(d);
+              const double t =
+                width > 0. ? (centre[d] - all.lower_bound(d)) / width : 0.;
+              bin = bin * bins_per_direction +
+                    std::min(static_cast<unsigned int>(t * bins_per_direction),
+                             bins_per_direction - 1);
+            }
+          const auto found = bins.find(bin);
+          if (found == bins.end())
+            bins.emplace(bin, box);
+          else
+            found->second.merge_with(box);
+        }
+      std::vector<BoundingBox<dim>> result;
+      for (const auto &bin : bins)
+        result.push_back(bin.second);
+      return result;
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  void
+  MaxEnt<dim>::find_node_cloud()
+  {
+    const DoFHandler<dim> &dofs = vertex_numbering.dof_handler();
+    const MPI_Comm communicator = dofs.get_triangulation().get_communicator();
+    const IndexSet owned        = vertex_numbering.locally_owned_functions();
+    const unsigned int n_ranks  = Utilities::MPI::n_mpi_processes(communicator);
+    const unsigned int this_rank =
+      Utilities::MPI::this_mpi_process(communicator);
+    if (n_ranks == 1)
+      {
+        complete_cloud = true;
+        node_partition =
+          std::make_shared<Utilities::MPI::Partitioner>(owned,
+                                                        complete_index_set(
+                                                          owned.size()),
+                                                        communicator);
+        return;
+      }
+
+    // The positions of the vertices this rank sees: its own and its ghost
+    // cells'. An owned node's nearest vertex among them bounds its zeta
+    // from above.
+    const IndexSet ghost_cell_vertices =
+      vertex_numbering.locally_relevant_functions();
+    std::map<types::global_dof_index, Point<dim>> known;
+    for (const auto &cell : dofs.active_cell_iterators())
+      if (cell->is_locally_owned() || cell->is_ghost())
+        for (const unsigned int v : cell->vertex_indices())
+          known.emplace(cell->vertex_dof_index(v, 0), cell->vertex(v));
+    std::vector<types::global_dof_index> known_indices;
+    std::vector<Point<dim>>              known_positions;
+    for (const auto &entry : known)
+      {
+        known_indices.push_back(entry.first);
+        known_positions.push_back(entry.second);
+      }
+    double largest_zeta_bound = 0;
+    {
+      const auto                tree = pack_rtree_of_indices(known_positions);
+      std::vector<unsigned int> nearest;
+      for (unsigned int k = 0; k < known_indices.size(); ++k)
+        if (owned.is_element(known_indices[k]))
+          {
+            nearest.clear();
+            tree.query(bgi::nearest(known_positions[k], 2),
+                       std::back_inserter(nearest));
+            for (const unsigned int j : nearest)
+              if (j != k)
+                largest_zeta_bound =
+                  std::max(largest_zeta_bound,
+                           known_positions[k].distance(known_positions[j]));
+          }
+    }
+    largest_zeta_bound = Utilities::MPI::max(largest_zeta_bound, communicator);
+
+    // Send each rank the owned nodes within reach of its cells' boxes:
+    // halo_factor d_max times the bound, which holds both the nearest
+    // neighbours of the rank's own nodes and the final halo.
+    const std::vector<BoundingBox<dim>> my_boxes = covering_boxes(dofs);
+    const auto                          all_boxes =
+      GridTools::exchange_local_bounding_boxes(my_boxes, communicator);
+    const double reach = halo_factor * support_factor * largest_zeta_bound;
+    std::vector<BoundingBox<dim>> others_boxes;
+    std::vector<unsigned int>     box_rank;
+    for (unsigned int rank = 0; rank < n_ranks; ++rank)
+      if (rank != this_rank)
+        for (const auto &box : all_boxes[rank])
+          {
+            others_boxes.push_back(widened(box, reach));
+            box_rank.push_back(rank);
+          }
+    std::map<unsigned int, std::vector<double>> sent;
+    {
+      const auto others_tree = pack_rtree_of_indices(others_boxes);
+      std::vector<unsigned int> hits;
+      for (unsigned int k = 0; k < known_indices.size(); ++k)
+        if (owned.is_element(known_indices[k]))
+          {
+            hits.clear();
+            others_tree.query(bgi::intersects(known_positions[k]),
+                              std::back_inserter(hits));
+            unsigned int last_rank = numbers::invalid_unsigned_int;
+            std::sort(hits.begin(), hits.end());
+            for (const unsigned int h : hits)
+              if (box_rank[h] != last_rank)
+                {
+                  last_rank   = box_rank[h];
+                  auto &entry = sent[last_rank];
+                  entry.push_back(known_indices[k]);
+                  for (unsigned int d = 0; d < dim; ++d)
+                    entry.push_back(known_positions[k][d]);
+                }
+          }
+    }
+    const auto received = Utilities::MPI::some_to_some(communicator, sent);
+
+    // zeta of the owned nodes: their nearest neighbours are among the known
+    // and the received nodes.
+    for (const auto &message : received)
+      for (unsigned int k = 0; k < message.second.size(); k += dim + 1)
+        {
+          Point<dim> x;
+          for (unsigned int d = 0; d < dim; ++d)
+            x[d] = message.second[k + 1 + d];
+          known.emplace(static_cast<types::global_dof_index>(message.second[k]),
+                        x);
+        }
+    known_indices.clear();
+    known_positions.clear();
+    for (const auto &entry : known)
+      {
+        known_indices.push_back(entry.first);
+        known_positions.push_back(entry.second);
+      }
+    double largest_radius = 0;
+    {
+      const auto                tree = pack_rtree_of_indices(known_positions);
+      std::vector<unsigned int> nearest;
+      for (unsigned int k = 0; k < known_indices.size(); ++k)
+        if (owned.is_element(known_indices[k]))
+          {
+            nearest.clear();
+            tree.query(bgi::nearest(known_positions[k], 2),
+                       std::back_inserter(nearest));
+            for (const unsigned int j : nearest)
+              if (j != k)
+                largest_radius =
+                  std::max(largest_radius,
+                           support_factor *
+                             known_positions[k].distance(known_positions[j]));
+          }
+    }
+    halo = halo_factor * Utilities::MPI::max(largest_radius, communicator);
+
+    // The cloud: the received nodes within the halo of this rank's cells,
+    // and the vertices of its ghost cells.
+    IndexSet relevant = ghost_cell_vertices;
+    relevant.add_indices(owned);
+    const auto                my_tree = pack_rtree_of_indices(my_boxes);
+    std::vector<unsigned int> hits;
+    std::vector<types::global_dof_index> in_halo;
+    for (unsigned int k = 0; k < known_indices.size(); ++k)
+      if (!relevant.is_element(known_indices[k]))
+        {
+          hits.clear();
+          Point<dim> lower = known_positions[k], upper = known_positions[k];
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              lower[d] -= halo;
+              upper[d] += halo;
+            }
+          my_tree.query(bgi::intersects(
+                          BoundingBox<dim>(std::make_pair(lower, upper))),
+                        std::back_inserter(hits));
+          for (const unsigned int h : hits)
+            if (squared_distance_to_box(known_positions[k], my_boxes[h]) <
+                halo * halo)
+              {
+                in_halo.push_back(known_indices[k]);
+                break;
+              }
+        }
+    relevant.add_indices(in_halo.begin(), in_halo.end());
+    relevant.compress();
+    complete_cloud = (relevant.n_elements() == owned.size());
+    node_partition =
+      std::make_shared<Utilities::MPI::Partitioner>(owned,
+                                                    relevant,
+                                                    communicator);
   }
 
 
 
   template <int dim>
   void
-  MaxEnt<dim>::update_nodes() const
+  MaxEnt<dim>::update_nodes(const MaterialPoints<dim> *material_points) const
   {
-    const DoFHandler<dim>  &dofs = vertex_numbering.dof_handler();
-    std::vector<Point<dim>> current(dofs.n_dofs());
-    for (const auto &cell : dofs.active_cell_iterators())
-      for (const unsigned int v : cell->vertex_indices())
-        current[cell->vertex_dof_index(v, 0)] = cell->vertex(v);
-    if (current == nodes && search_tree)
-      return;
-    nodes = std::move(current);
-
-    // zeta_i: distance to the nearest other node.
-    const auto point_tree = pack_rtree_of_indices(nodes);
-    radii.resize(nodes.size());
-    inverse_radii.resize(nodes.size());
-    supports.resize(nodes.size());
-    std::vector<unsigned int> nearest;
-    for (unsigned int i = 0; i < nodes.size(); ++i)
+    const DoFHandler<dim> &dofs = vertex_numbering.dof_handler();
+    const MPI_Comm communicator = node_partition->get_mpi_communicator();
+    const bool     parallel = Utilities::MPI::n_mpi_processes(communicator) > 1;
+    const unsigned int n_owned = node_partition->locally_owned_size();
+    const unsigned int n_local = n_owned + node_partition->n_ghost_indices();
+    const bool         first   = !search_tree;
+    bool               moved   = first;
+    if (first)
       {
-        nearest.clear();
-        point_tree.query(bgi::nearest(nodes[i], 2),
-                         std::back_inserter(nearest));
-        double zeta = std::numeric_limits<double>::max();
-        for (const unsigned int j : nearest)
-          if (j != i)
-            zeta = std::min(zeta, nodes[i].distance(nodes[j]));
-        AssertThrow(zeta > 0. && zeta < std::numeric_limits<double>::max(),
-                    ExcMessage("Max-ent shape functions need at least two "
-                               "distinct nodes."));
-        radii[i]         = support_factor * zeta;
-        inverse_radii[i] = 1. / radii[i];
-        Point<dim> lower = nodes[i], upper = nodes[i];
-        for (unsigned int d = 0; d < dim; ++d)
+        nodes.resize(n_local);
+        radii.resize(n_local);
+      }
+    // The positions of the owned nodes, from the owned cells' vertices (in
+    // one rank: all cells).
+    for (const auto &cell : dofs.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const unsigned int v : cell->vertex_indices())
           {
-            lower[d] -= radii[i];
-            upper[d] += radii[i];
+            const types::global_dof_index global = cell->vertex_dof_index(v, 0);
+            if (!node_partition->in_local_range(global))
+              continue;
+            const unsigned int local = node_partition->global_to_local(global);
+            if (!(nodes[local] == cell->vertex(v)))
+              {
+                nodes[local] = cell->vertex(v);
+                moved        = true;
+              }
           }
-        supports[i] = BoundingBox<dim>(std::make_pair(lower, upper));
+    if (parallel)
+      moved = Utilities::MPI::max(moved ? 1 : 0, communicator) > 0;
+    if (!moved)
+      return;
+
+    // Positions of the cloud, then the owned nodes' zeta (distance to the
+    // nearest other node) and the cloud's radii.
+    VectorType exchange(node_partition);
+    if (parallel)
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          for (unsigned int i = 0; i < n_owned; ++i)
+            exchange.local_element(i) = nodes[i][d];
+          exchange.update_ghost_values();
+          for (unsigned int i = n_owned; i < n_local; ++i)
+            nodes[i][d] = exchange.local_element(i);
+        }
+    {
+      const auto                point_tree = pack_rtree_of_indices(nodes);
+      std::vector<unsigned int> nearest;
+      for (unsigned int i = 0; i < n_owned; ++i)
+        {
+          nearest.clear();
+          point_tree.query(bgi::nearest(nodes[i], 2),
+                           std::back_inserter(nearest));
+          double zeta = std::numeric_limits<double>::max();
+          for (const unsigned int j : nearest)
+            if (j != i)
+              zeta = std::min(zeta, nodes[i].distance(nodes[j]));
+          AssertThrow(zeta > 0. && zeta < std::numeric_limits<double>::max(),
+                      ExcMessage("Max-ent shape functions need at least two "
+                                 "distinct nodes."));
+          radii[i] = support_factor * zeta;
+        }
+    }
+    if (parallel)
+      {
+        for (unsigned int i = 0; i < n_owned; ++i)
+          exchange.local_element(i) = radii[i];
+        exchange.update_ghost_values();
+        for (unsigned int i = n_owned; i < n_local; ++i)
+          radii[i] = exchange.local_element(i);
+      }
+    inverse_radii.resize(n_local);
+    supports.resize(n_local);
+    for (unsigned int i = 0; i < n_local; ++i)
+      {
+        inverse_radii[i] = 1. / radii[i];
+        supports[i] =
+          widened(BoundingBox<dim>(std::make_pair(nodes[i], nodes[i])),
+                  radii[i]);
       }
     search_tree = std::make_unique<SearchTree>(supports);
 
-    // Each cell's candidates: the nodes whose support ball meets the cell's
-    // bounding box.
+    // Each owned cell's candidates: the nodes whose support ball meets the
+    // cell's bounding box.
     const Triangulation<dim> &triangulation = dofs.get_triangulation();
     cell_boxes.resize(triangulation.n_active_cells());
     cell_node_offsets.assign(triangulation.n_active_cells() + 1, 0);
     cell_nodes.clear();
     for (const auto &cell : triangulation.active_cell_iterators())
       {
-        const unsigned int c       = cell->active_cell_index();
-        cell_node_offsets[c]       = cell_nodes.size();
+        const unsigned int c = cell->active_cell_index();
+        cell_node_offsets[c] = cell_nodes.size();
+        if (!cell->is_locally_owned())
+          continue;
         const BoundingBox<dim> box = cell->bounding_box();
         cell_boxes[c]              = box;
         candidates.clear();
         search_tree->tree.query(bgi::intersects(box),
                                 std::back_inserter(candidates));
         for (const unsigned int i : candidates)
-          {
-            double squared_distance = 0;
-            for (unsigned int d = 0; d < dim; ++d)
-              {
-                const double outside =
-                  std::max({box.lower_bound(d) - nodes[i][d],
-                            nodes[i][d] - box.upper_bound(d),
-                            0.});
-                squared_distance += outside * outside;
-              }
-            // Nodes whose support only touches the box (to round-off, as
-            // on a uniform grid with integer d_max) have zero weight in it.
-            if (squared_distance < (1. - 1e-10) * radii[i] * radii[i])
-              cell_nodes.push_back(i);
-          }
+          // Nodes whose support only touches the box (to round-off, as
+          // on a uniform grid with integer d_max) have zero weight in it.
+          if (squared_distance_to_box(nodes[i], box) <
+              (1. - 1e-10) * radii[i] * radii[i])
+            cell_nodes.push_back(i);
       }
     cell_node_offsets.back() = cell_nodes.size();
+
+    if (!parallel)
+      return;
+    if (first)
+      {
+        initial_owned_nodes.assign(nodes.begin(), nodes.begin() + n_owned);
+        initial_cell_boxes = cell_boxes;
+      }
+    // The largest radius on all ranks and the box of all nodes'
+    // displacements since set-up (its upper corner and minus its lower one),
+    // in one reduction.
+    std::vector<double> extremes(1 + 2 * dim,
+                                 -std::numeric_limits<double>::max());
+    for (unsigned int i = 0; i < n_owned; ++i)
+      {
+        extremes[0] = std::max(extremes[0], radii[i]);
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            const double u        = nodes[i][d] - initial_owned_nodes[i][d];
+            extremes[1 + d]       = std::max(extremes[1 + d], u);
+            extremes[1 + dim + d] = std::max(extremes[1 + dim + d], -u);
+          }
+      }
+    {
+      const std::vector<double> local_extremes = extremes;
+      Utilities::MPI::max(local_extremes, communicator, extremes);
+    }
+    Tensor<1, dim> centre;
+    double         spread = 0;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        centre[d]          = 0.5 * (extremes[1 + d] - extremes[1 + dim + d]);
+        const double width = 0.5 * (extremes[1 + d] + extremes[1 + dim + d]);
+        spread += width * width;
+      }
+    stop_if_any_rank_failed(
+      communicator,
+      check_cloud(material_points, extremes[0], centre, std::sqrt(spread)),
+      "The max-ent nodes moved so far relative to each other that a rank "
+      "could miss a node whose support reaches its material points: ",
+      "Increase Max-ent halo factor (now " + Utilities::to_string(halo_factor) +
+        "), or run on fewer MPI ranks.");
+  }
+
+
+
+  template <int dim>
+  std::string
+  MaxEnt<dim>::check_cloud(const MaterialPoints<dim> *material_points,
+                           const double               largest_radius,
+                           const Tensor<1, dim>      &displacement_centre,
+                           const double               displacement_spread) const
+  {
+    if (complete_cloud)
+      return "";
+    // A node outside the cloud started at least the halo H from this
+    // rank's cells and has moved by at most the spread from the centre of
+    // all displacements; it cannot reach a point y of a cell whose box at
+    // set-up, moved by that centre, lies within
+    // H - spread - largest radius of y.
+    const double allowed = halo - displacement_spread - largest_radius;
+    const DoFHandler<dim>        &dofs = vertex_numbering.dof_handler();
+    std::vector<BoundingBox<dim>> current(cell_boxes.size());
+    for (const auto &cell : dofs.active_cell_iterators())
+      if (cell->is_locally_owned())
+        current[cell->active_cell_index()] =
+          cell_boxes[cell->active_cell_index()];
+    if (material_points)
+      for (const auto &particle : material_points->particle_handler())
+        current[particle.get_surrounding_cell()->active_cell_index()]
+          .merge_with(BoundingBox<dim>(
+            std::make_pair(particle.get_location(), particle.get_location())));
+    for (const auto &cell : dofs.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          const unsigned int      c     = cell->active_cell_index();
+          const BoundingBox<dim> &box   = current[c];
+          double                  worst = 0;
+          for (unsigned int v = 0; v < GeometryInfo<dim>::vertices_per_cell;
+               ++v)
+            {
+              Point<dim> corner;
+              for (unsigned int d = 0; d < dim; ++d)
+                corner[d] =
+                  ((v >> d) & 1) ? box.upper_bound(d) : box.lower_bound(d);
+              worst =
+                std::max(worst,
+                         squared_distance_to_box(corner - displacement_centre,
+                                                 initial_cell_boxes[c]));
+            }
+          if (std::sqrt(worst) > allowed)
+            {
+              std::ostringstream message;
+              message << "on MPI rank "
+                      << Utilities::MPI::this_mpi_process(
+                           node_partition->get_mpi_communicator())
+                      << ", the cell at (" << cell->center()
+                      << ") with its points lies " << std::sqrt(worst)
+                      << " outside its set-up box moved with the nodes' common "
+                         "displacement, but the halo "
+                      << halo << " less the spread " << displacement_spread
+                      << " of the nodes' displacements and the largest support "
+                         "radius "
+                      << largest_radius << " allows " << allowed << ". ";
+              return message.str();
+            }
+        }
+    return "";
   }
 
 
@@ -337,8 +759,8 @@ namespace MpmOtm
         }
       return false;
     };
-    // The first guess (the multipliers of the point's last step, or of the
-    // last point) can lie far from the solution, e.g. near the hull's
+    // The first guess (the multipliers of the point solved before) can lie
+    // far from the solution, e.g. near the hull's
     // boundary; start again from zero if it fails.
     bool converged = newton();
     if (!converged && lambda.norm() > 0.)
@@ -419,7 +841,7 @@ namespace MpmOtm
         {
           values[indices.size()]    = values[k];
           gradients[indices.size()] = gradients[k];
-          indices.push_back(candidates[k]);
+          indices.push_back(node_partition->local_to_global(candidates[k]));
         }
     values.resize(indices.size());
     gradients.resize(indices.size());
@@ -432,8 +854,7 @@ namespace MpmOtm
   const Point<dim> &
   MaxEnt<dim>::node(const types::global_dof_index i) const
   {
-    AssertIndexRange(i, nodes.size());
-    return nodes[i];
+    return nodes[node_partition->global_to_local(i)];
   }
 
 
@@ -442,8 +863,7 @@ namespace MpmOtm
   double
   MaxEnt<dim>::support_radius(const types::global_dof_index i) const
   {
-    AssertIndexRange(i, radii.size());
-    return radii[i];
+    return radii[node_partition->global_to_local(i)];
   }
 
 
@@ -454,13 +874,21 @@ namespace MpmOtm
                         const Utilities::MPI::Partitioner &partitioner,
                         ParticleShapeData<dim>            &data) const
   {
-    update_nodes();
+    update_nodes(&material_points);
+    // The local numbers of the nodes are those of the partition the nodal
+    // system builds from locally_owned_functions() and
+    // locally_relevant_functions().
+    Assert(partitioner.locally_owned_range() ==
+               node_partition->locally_owned_range() &&
+             partitioner.ghost_indices() == node_partition->ghost_indices(),
+           ExcInternalError());
+    (void)partitioner;
     const auto &particles = material_points.particle_handler();
     data.offsets.resize(particles.n_locally_owned_particles() + 1);
     data.indices.clear();
     data.values.clear();
     data.gradients.clear();
-    multipliers.resize(particles.get_next_free_particle_index());
+    previous_lambda = Tensor<1, dim>();
 
     // A point inside its cell's bounding box gets the cell's candidates, so
     // that the points of a cell share their list of functions (the mass
@@ -503,16 +931,16 @@ namespace MpmOtm
         const std::string failure = solve(x,
                                           candidate_nodes,
                                           n_candidates,
-                                          multipliers[particle.get_id()],
+                                          previous_lambda,
                                           &data.values[offset],
                                           &data.gradients[offset]);
         AssertThrow(failure.empty(),
                     ExcMessage("At material point " +
                                std::to_string(particle.get_id()) + ": " +
                                failure));
-        for (unsigned int e = 0; e < n_candidates; ++e)
-          data.indices[offset + e] =
-            partitioner.global_to_local(candidate_nodes[e]);
+        std::copy(candidate_nodes,
+                  candidate_nodes + n_candidates,
+                  data.indices.begin() + offset);
         ++k;
       }
     data.offsets[k] = data.indices.size();
@@ -542,8 +970,9 @@ namespace MpmOtm
   IndexSet
   MaxEnt<dim>::locally_relevant_functions() const
   {
-    // Serial only: every function is relevant.
-    return complete_index_set(n_functions());
+    IndexSet relevant = node_partition->ghost_indices();
+    relevant.add_indices(node_partition->locally_owned_range());
+    return relevant;
   }
 
 
@@ -574,9 +1003,12 @@ namespace MpmOtm
   {
     // The cell's candidates: the nodes whose support meets its bounding box
     // (for a simplex a few more than those that reach the cell itself).
+    Assert(cell->is_locally_owned(), ExcInternalError());
     const unsigned int c = cell->active_cell_index();
-    functions.assign(cell_nodes.begin() + cell_node_offsets[c],
-                     cell_nodes.begin() + cell_node_offsets[c + 1]);
+    functions.clear();
+    for (unsigned int k = cell_node_offsets[c]; k < cell_node_offsets[c + 1];
+         ++k)
+      functions.push_back(node_partition->local_to_global(cell_nodes[k]));
   }
 
 
@@ -608,7 +1040,8 @@ namespace MpmOtm
   {
     update_nodes();
     values.reinit(coefficients.get_partitioner());
-    for (unsigned int i = 0; i < nodes.size(); ++i)
+    previous_lambda = Tensor<1, dim>();
+    for (unsigned int i = 0; i < node_partition->locally_owned_size(); ++i)
       {
         // On the hull's boundary the multipliers grow until the functions of
         // the nodes off the boundary fall below Newton's tolerance (weak
@@ -621,7 +1054,7 @@ namespace MpmOtm
           {
             Point<dim> centroid;
             for (const auto j : point_indices)
-              centroid += nodes[j] / double(point_indices.size());
+              centroid += node(j) / double(point_indices.size());
             failure = evaluate_at(nodes[i] + 1e-6 * (centroid - nodes[i]),
                                   point_indices,
                                   point_values,
@@ -631,37 +1064,9 @@ namespace MpmOtm
         double value = 0;
         for (unsigned int e = 0; e < point_indices.size(); ++e)
           value += point_values[e] * coefficients(point_indices[e]);
-        values(i) = value;
+        values.local_element(i) = value;
       }
     values.update_ghost_values();
-  }
-
-
-
-  template <int dim>
-  void
-  MaxEnt<dim>::save(CheckpointState &state) const
-  {
-    std::vector<double> values;
-    values.reserve(multipliers.size() * dim);
-    for (const auto &lambda : multipliers)
-      for (unsigned int d = 0; d < dim; ++d)
-        values.push_back(lambda[d]);
-    state.set_shared("max-ent/Lagrange multipliers by point id", values);
-  }
-
-
-
-  template <int dim>
-  void
-  MaxEnt<dim>::load(const CheckpointState &state)
-  {
-    const auto &values =
-      state.shared("max-ent/Lagrange multipliers by point id");
-    multipliers.resize(values.size() / dim);
-    for (unsigned int k = 0; k < multipliers.size(); ++k)
-      for (unsigned int d = 0; d < dim; ++d)
-        multipliers[k][d] = values[k * dim + d];
   }
 
 

@@ -5,7 +5,10 @@
 // with moving knots in 2D), and on fully distributed grids: triangles
 // (MPM, OTM, and MPM and the unified approach with Powell-Sabin splines),
 // tetrahedra (MPM) and 1D
-// intervals (MPM, OTM, the unified approach with moving B-spline knots). Each
+// intervals (MPM, OTM, the unified approach with moving B-spline knots), and
+// with max-ent functions, whose supports reach beyond the ghost cells
+// (MPM and OTM on quadrilaterals, MPM on triangles and hexahedra, OTM in
+// 1D). Each
 // runs once on MPI_COMM_WORLD (2 ranks) and once on rank 0 alone; the error
 // norms against the exact solution and the energies agree to round-off, and the
 // errors are small.
@@ -126,6 +129,13 @@ end
              common + bar_2d + simplices +
                "set Shape functions = Powell-Sabin\n"
                "set Method = Unified\n");
+  // Max-ent: each rank keeps the nodes within the halo of its cells; with
+  // OTM their positions and radii are exchanged every step.
+  const std::string max_ent = "set Shape functions = max-ent\n";
+  compare<2>("2D max-ent", common + bar_2d + max_ent);
+  compare<2>("2D max-ent OTM", common + bar_2d + max_ent + otm);
+  compare<2>("2D simplex max-ent", common + bar_2d + simplices + max_ent);
+  compare<3>("3D max-ent", common + bar_3d + max_ent);
   // 1D: a fully distributed line of intervals.
   const std::string bar_1d = R"(
 set Dimension = 1
@@ -140,6 +150,7 @@ end
 )";
   compare<1>("1D", common + bar_1d);
   compare<1>("1D OTM", common + bar_1d + otm);
+  compare<1>("1D max-ent OTM", common + bar_1d + max_ent + otm);
   compare<1>("1D Unified B-spline",
              common + bar_1d + splines + "set Method = Unified\n");
 }

@@ -1,6 +1,8 @@
 #ifndef mpm_otm_shape_functions_max_ent_h
 #define mpm_otm_shape_functions_max_ent_h
 
+#include <deal.II/base/bounding_box.h>
+
 #include <mpm_otm/shape_functions/linear_lagrange.h>
 #include <mpm_otm/shape_functions/shape_functions.h>
 
@@ -45,6 +47,23 @@ namespace MpmOtm
    * linear functions, one per vertex, and the numbering, the boundary sets
    * and the output element are those of a LinearLagrange object (the field
    * is written by its values at the vertices).
+   *
+   * Under MPI each rank owns the nodes of its vertex degrees of freedom and
+   * keeps a cloud of other ranks' nodes: every node within the halo
+   * H = (Max-ent halo factor) max_i d_i of its cells at set-up, and the
+   * vertices of its ghost cells. The cloud is found once, with one
+   * point-to-point exchange of node positions (Utilities::MPI::some_to_some)
+   * wide enough that each rank also finds the nearest neighbours of its own
+   * nodes, so zeta_i and d_i are those of one rank exactly. When the nodes
+   * move (OTM, the unified approach), their positions and radii reach the
+   * cloud through ghost exchanges every step, and a bound on how far any
+   * node has moved relative to the others checks that no node outside the
+   * cloud can reach a rank's points; otherwise the run stops and names the
+   * halo factor.
+   *
+   * Newton's method starts from the multipliers of the point evaluated
+   * before (zero for the first point of a pass), so nothing is stored per
+   * point and nothing has to move with the points between ranks.
    */
   template <int dim>
   class MaxEnt : public ShapeFunctions<dim>
@@ -93,16 +112,6 @@ namespace MpmOtm
     bool
     is_linearly_complete() const override;
 
-    /**
-     * Save each point's Lagrange multipliers, from which its next Newton
-     * iteration starts.
-     */
-    void
-    save(CheckpointState &state) const override;
-
-    void
-    load(const CheckpointState &state) override;
-
     void
     functions_on_cell(
       const typename Triangulation<dim>::active_cell_iterator &cell,
@@ -124,17 +133,21 @@ namespace MpmOtm
                  VectorType       &values) const override;
 
     /**
-     * Collect the node positions and support radii from the current
-     * vertices and build the search tree.
+     * Bring the node positions and support radii up to date with the
+     * current vertices and rebuild the search structures if they moved.
+     * Collective under MPI. With @p material_points, their positions enter
+     * the check that the cloud still holds every node that can reach them.
      */
     void
-    update_nodes() const;
+    update_nodes(const MaterialPoints<dim> *material_points = nullptr) const;
 
     /**
      * The functions that do not vanish at @p x, their values and gradients
-     * (global indices). Returns an empty string, or a message naming @p x
-     * and what to change if fewer than dim + 1 nodes reach x or Newton's
-     * method does not converge (x outside the convex hull of the nodes).
+     * (global indices; x must lie where this rank's cloud of nodes reaches,
+     * e.g. in one of its locally owned cells). Returns an empty string, or a
+     * message naming @p x and what to change if fewer than dim + 1 nodes reach
+     * x or Newton's method does not converge (x outside the convex hull of the
+     * nodes).
      */
     std::string
     evaluate_at(const Point<dim>                     &x,
@@ -156,12 +169,20 @@ namespace MpmOtm
 
   private:
     double support_factor;
+    /// Halo of the cloud of other ranks' nodes, as a multiple of the
+    /// largest support radius at set-up.
+    double halo_factor;
 
     /// The numbering of the nodes (one function per vertex, as for linear
     /// functions), their boundary sets and the output element.
     LinearLagrange<dim> vertex_numbering;
 
-    /// Current node positions and support radii, by function index.
+    /// The nodes this rank owns and those of its cloud; node arrays below
+    /// are indexed by the local numbers of this partition (owned first).
+    std::shared_ptr<Utilities::MPI::Partitioner> node_partition;
+    /// Whether the cloud holds every node (one rank, or a small grid).
+    bool complete_cloud = true;
+    /// Current node positions and support radii, by local index.
     mutable std::vector<Point<dim>> nodes;
     mutable std::vector<double>     radii;
     mutable std::vector<double>     inverse_radii;
@@ -169,16 +190,18 @@ namespace MpmOtm
     mutable std::vector<BoundingBox<dim>> supports;
     struct SearchTree;
     mutable std::unique_ptr<SearchTree> search_tree;
-    /// Each active cell's bounding box and the nodes whose support meets it
-    /// (cell c's nodes are cell_nodes[cell_node_offsets[c]] onwards).
+    /// Each locally owned cell's bounding box and the nodes whose support
+    /// meets it (cell c's nodes are cell_nodes[cell_node_offsets[c]]
+    /// onwards; local indices), by active cell index.
     mutable std::vector<BoundingBox<dim>> cell_boxes;
     mutable std::vector<unsigned int>     cell_node_offsets;
     mutable std::vector<unsigned int>     cell_nodes;
-    /// Each material point's multipliers of the last step (by particle id):
-    /// its next first guess.
-    mutable std::vector<Tensor<1, dim>> multipliers;
-    /// Multipliers of the last point evaluate_at() evaluated: the next one's
-    /// first guess.
+    /// For the cloud check when the nodes move: the owned nodes' and the
+    /// owned cells' bounding boxes at set-up, and the halo H.
+    mutable std::vector<Point<dim>>       initial_owned_nodes;
+    mutable std::vector<BoundingBox<dim>> initial_cell_boxes;
+    double                                halo = 0;
+    /// Multipliers of the last point solved: the next one's first guess.
     mutable Tensor<1, dim> previous_lambda;
     /// Work arrays of one point, kept to avoid allocation per point.
     mutable std::vector<unsigned int> candidates;
@@ -194,6 +217,28 @@ namespace MpmOtm
     mutable std::vector<types::global_dof_index> point_indices;
     mutable std::vector<double>                  point_values;
     mutable std::vector<Tensor<1, dim>>          point_gradients;
+
+    /**
+     * Find the cloud of other ranks' nodes (see the class documentation)
+     * and set up node_partition. Collective.
+     */
+    void
+    find_node_cloud();
+
+    /**
+     * Under MPI with a partial cloud: a description of the first locally
+     * owned cell (with its points, if @p material_points) that moved so
+     * far relative to the nodes outside the cloud that one of them could
+     * reach it, or an empty string. @p largest_radius is the largest
+     * support radius on all ranks, @p displacement_centre and
+     * @p displacement_spread the centre and half diagonal of the box of all
+     * nodes' displacements since set-up.
+     */
+    std::string
+    check_cloud(const MaterialPoints<dim> *material_points,
+                const double               largest_radius,
+                const Tensor<1, dim>      &displacement_centre,
+                const double               displacement_spread) const;
 
     /**
      * The values and gradients at @p x of the functions of the
