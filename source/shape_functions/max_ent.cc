@@ -244,15 +244,20 @@ namespace MpmOtm
       if (cell->is_locally_owned() || cell->is_ghost())
         for (const unsigned int v : cell->vertex_indices())
           known.emplace(cell->vertex_dof_index(v, 0), cell->vertex(v));
+    // Flatten the known nodes into known_indices and known_positions and
+    // return the largest distance from an owned node to its nearest other
+    // known node.
     std::vector<types::global_dof_index> known_indices;
     std::vector<Point<dim>>              known_positions;
-    for (const auto &entry : known)
-      {
-        known_indices.push_back(entry.first);
-        known_positions.push_back(entry.second);
-      }
-    double largest_zeta_bound = 0;
-    {
+    const auto                           largest_nearest_distance = [&]() {
+      known_indices.clear();
+      known_positions.clear();
+      for (const auto &entry : known)
+        {
+          known_indices.push_back(entry.first);
+          known_positions.push_back(entry.second);
+        }
+      double                    largest = 0;
       const auto                tree = pack_rtree_of_indices(known_positions);
       std::vector<unsigned int> nearest;
       for (unsigned int k = 0; k < known_indices.size(); ++k)
@@ -263,12 +268,14 @@ namespace MpmOtm
                        std::back_inserter(nearest));
             for (const unsigned int j : nearest)
               if (j != k)
-                largest_zeta_bound =
-                  std::max(largest_zeta_bound,
+                largest =
+                  std::max(largest,
                            known_positions[k].distance(known_positions[j]));
           }
-    }
-    largest_zeta_bound = Utilities::MPI::max(largest_zeta_bound, communicator);
+      return largest;
+    };
+    const double largest_zeta_bound =
+      Utilities::MPI::max(largest_nearest_distance(), communicator);
 
     // Send each rank the owned nodes within reach of its cells' boxes:
     // halo_factor d_max times the bound, which holds both the nearest
@@ -311,8 +318,8 @@ namespace MpmOtm
     }
     const auto received = Utilities::MPI::some_to_some(communicator, sent);
 
-    // zeta of the owned nodes: their nearest neighbours are among the known
-    // and the received nodes.
+    // The owned nodes' nearest neighbours are among the known and the
+    // received nodes: their largest zeta sets the halo.
     for (const auto &message : received)
       for (unsigned int k = 0; k < message.second.size(); k += dim + 1)
         {
@@ -322,32 +329,8 @@ namespace MpmOtm
           known.emplace(static_cast<types::global_dof_index>(message.second[k]),
                         x);
         }
-    known_indices.clear();
-    known_positions.clear();
-    for (const auto &entry : known)
-      {
-        known_indices.push_back(entry.first);
-        known_positions.push_back(entry.second);
-      }
-    double largest_radius = 0;
-    {
-      const auto                tree = pack_rtree_of_indices(known_positions);
-      std::vector<unsigned int> nearest;
-      for (unsigned int k = 0; k < known_indices.size(); ++k)
-        if (owned.is_element(known_indices[k]))
-          {
-            nearest.clear();
-            tree.query(bgi::nearest(known_positions[k], 2),
-                       std::back_inserter(nearest));
-            for (const unsigned int j : nearest)
-              if (j != k)
-                largest_radius =
-                  std::max(largest_radius,
-                           support_factor *
-                             known_positions[k].distance(known_positions[j]));
-          }
-    }
-    halo = halo_factor * Utilities::MPI::max(largest_radius, communicator);
+    halo = halo_factor * support_factor *
+           Utilities::MPI::max(largest_nearest_distance(), communicator);
 
     // The cloud: the received nodes within the halo of this rank's cells,
     // and the vertices of its ghost cells.
