@@ -78,13 +78,14 @@ namespace MpmOtm
       "1.5",
       Patterns::Double(1.),
       "Under MPI, each rank keeps the nodes of other ranks within this "
-      "factor times the largest support radius d_max zeta_i of its cells "
-      "at set-up (Shape functions = max-ent). 1 suffices on a fixed grid "
-      "(MPM). When the nodes move with the material (OTM), the margin, "
-      "(factor - 1) times that radius, is how far the nodes may move "
-      "relative to each other before a rank could miss a node that reaches "
-      "its points; the run then stops and asks for a larger factor. Larger "
-      "factors exchange more nodes.");
+      "factor times the largest support radius d_max zeta_i of all nodes at "
+      "set-up from its cells (Shape functions = max-ent). 1 suffices on a "
+      "fixed grid (MPM). When the nodes move with the material (OTM), the "
+      "margin, (factor - 1) times that radius, must hold about twice the "
+      "spread of all nodes' displacements (half the diagonal of their range "
+      "over the whole body; a translation has none): beyond it a rank could "
+      "miss a node that reaches its points, and the run stops and asks for "
+      "a larger factor. Larger factors exchange more nodes.");
   }
 
 
@@ -353,7 +354,7 @@ namespace MpmOtm
                           BoundingBox<dim>(std::make_pair(lower, upper))),
                         std::back_inserter(hits));
           for (const unsigned int h : hits)
-            if (squared_distance_to_box(known_positions[k], my_boxes[h]) <
+            if (squared_distance_to_box(known_positions[k], my_boxes[h]) <=
                 halo * halo)
               {
                 in_halo.push_back(known_indices[k]);
@@ -406,7 +407,13 @@ namespace MpmOtm
     if (parallel)
       moved = Utilities::MPI::max(moved ? 1 : 0, communicator) > 0;
     if (!moved)
-      return;
+      {
+        // The nodes last moved before an update without the points (grid
+        // output): check the points against that update now.
+        if (parallel && material_points && points_unchecked)
+          stop_if_cloud_too_small(material_points);
+        return;
+      }
 
     // Positions of the cloud, then the owned nodes' zeta (distance to the
     // nearest other node) and the cloud's radii.
@@ -509,34 +516,42 @@ namespace MpmOtm
       const std::vector<double> local_extremes = extremes;
       Utilities::MPI::max(local_extremes, communicator, extremes);
     }
-    Tensor<1, dim> centre;
-    double         spread = 0;
+    largest_radius      = extremes[0];
+    displacement_spread = 0;
     for (unsigned int d = 0; d < dim; ++d)
       {
-        centre[d]          = 0.5 * (extremes[1 + d] - extremes[1 + dim + d]);
+        displacement_centre[d] =
+          0.5 * (extremes[1 + d] - extremes[1 + dim + d]);
         const double width = 0.5 * (extremes[1 + d] + extremes[1 + dim + d]);
-        spread += width * width;
+        displacement_spread += width * width;
       }
+    displacement_spread = std::sqrt(displacement_spread);
+    stop_if_cloud_too_small(material_points);
+  }
+
+
+
+  template <int dim>
+  void
+  MaxEnt<dim>::stop_if_cloud_too_small(
+    const MaterialPoints<dim> *material_points) const
+  {
     stop_if_any_rank_failed(
-      communicator,
-      check_cloud(material_points, extremes[0], centre, std::sqrt(spread)),
+      node_partition->get_mpi_communicator(),
+      complete_cloud ? std::string() : cloud_problem(material_points),
       "The max-ent nodes moved so far relative to each other that a rank "
       "could miss a node whose support reaches its material points: ",
       "Increase Max-ent halo factor (now " + Utilities::to_string(halo_factor) +
         "), or run on fewer MPI ranks.");
+    points_unchecked = (material_points == nullptr);
   }
 
 
 
   template <int dim>
   std::string
-  MaxEnt<dim>::check_cloud(const MaterialPoints<dim> *material_points,
-                           const double               largest_radius,
-                           const Tensor<1, dim>      &displacement_centre,
-                           const double               displacement_spread) const
+  MaxEnt<dim>::cloud_problem(const MaterialPoints<dim> *material_points) const
   {
-    if (complete_cloud)
-      return "";
     // A node outside the cloud started at least the halo H from this
     // rank's cells and has moved by at most the spread from the centre of
     // all displacements; it cannot reach a point y of a cell whose box at

@@ -50,7 +50,8 @@ namespace MpmOtm
    *
    * Under MPI each rank owns the nodes of its vertex degrees of freedom and
    * keeps a cloud of other ranks' nodes: every node within the halo
-   * H = (Max-ent halo factor) max_i d_i of its cells at set-up, and the
+   * H = (Max-ent halo factor) max_i d_i (over all nodes, at set-up) of its
+   * cells, and the
    * vertices of its ghost cells. The cloud is found once, with one
    * point-to-point exchange of node positions (Utilities::MPI::some_to_some)
    * wide enough that each rank also finds the nearest neighbours of its own
@@ -201,6 +202,15 @@ namespace MpmOtm
     mutable std::vector<Point<dim>>       initial_owned_nodes;
     mutable std::vector<BoundingBox<dim>> initial_cell_boxes;
     double                                halo = 0;
+    /// What the last update of moving nodes found: the largest support
+    /// radius on all ranks and the centre and half diagonal of the box of
+    /// all nodes' displacements since set-up; and whether it checked the
+    /// cloud without the material points (for grid output), so that the
+    /// next evaluation checks them.
+    mutable double         largest_radius = 0;
+    mutable Tensor<1, dim> displacement_centre;
+    mutable double         displacement_spread = 0;
+    mutable bool           points_unchecked    = false;
     /// Multipliers of the last point solved: the next one's first guess.
     mutable Tensor<1, dim> previous_lambda;
     /// Work arrays of one point, kept to avoid allocation per point.
@@ -226,19 +236,22 @@ namespace MpmOtm
     find_node_cloud();
 
     /**
-     * Under MPI with a partial cloud: a description of the first locally
-     * owned cell (with its points, if @p material_points) that moved so
-     * far relative to the nodes outside the cloud that one of them could
-     * reach it, or an empty string. @p largest_radius is the largest
-     * support radius on all ranks, @p displacement_centre and
-     * @p displacement_spread the centre and half diagonal of the box of all
-     * nodes' displacements since set-up.
+     * Under MPI: stop the run on all ranks if on some rank with a partial
+     * cloud a locally owned cell (with its points, if @p material_points)
+     * moved so far relative to the nodes outside the cloud that one of them
+     * could reach it. Uses the largest support radius and the centre and
+     * half diagonal of the box of all nodes' displacements that the last
+     * update of the nodes found. Collective.
+     */
+    void
+    stop_if_cloud_too_small(const MaterialPoints<dim> *material_points) const;
+
+    /**
+     * The local part of stop_if_cloud_too_small(): a description of the
+     * first locally owned cell that fails the check, or an empty string.
      */
     std::string
-    check_cloud(const MaterialPoints<dim> *material_points,
-                const double               largest_radius,
-                const Tensor<1, dim>      &displacement_centre,
-                const double               displacement_spread) const;
+    cloud_problem(const MaterialPoints<dim> *material_points) const;
 
     /**
      * The values and gradients at @p x of the functions of the
