@@ -4,6 +4,7 @@
 #include <deal.II/base/bounding_box.h>
 
 #include <mpm_otm/shape_functions/linear_lagrange.h>
+#include <mpm_otm/shape_functions/max_ent_node_cloud.h>
 #include <mpm_otm/shape_functions/shape_functions.h>
 
 #include <memory>
@@ -48,19 +49,9 @@ namespace MpmOtm
    * and the output element are those of a LinearLagrange object (the field
    * is written by its values at the vertices).
    *
-   * Under MPI each rank owns the nodes of its vertex degrees of freedom and
-   * keeps a cloud of other ranks' nodes: every node within the halo
-   * H = (Max-ent halo factor) max_i d_i (over all nodes, at set-up) of its
-   * cells, and the
-   * vertices of its ghost cells. The cloud is found once, with one
-   * point-to-point exchange of node positions (Utilities::MPI::some_to_some)
-   * wide enough that each rank also finds the nearest neighbours of its own
-   * nodes, so zeta_i and d_i are those of one rank exactly. When the nodes
-   * move (OTM, the unified approach), their positions and radii reach the
-   * cloud through ghost exchanges every step, and a bound on how far any
-   * node has moved relative to the others checks that no node outside the
-   * cloud can reach a rank's points; otherwise the run stops and names the
-   * halo factor.
+   * Under MPI each rank works on the nodes of a MaxEntNodeCloud: those it
+   * owns and the other ranks' nodes within a halo of its cells, which it
+   * keeps up to date when the nodes move.
    *
    * Newton's method starts from the multipliers of the point evaluated
    * before (zero for the first point of a pass), so nothing is stored per
@@ -178,15 +169,11 @@ namespace MpmOtm
     /// functions), their boundary sets and the output element.
     LinearLagrange<dim> vertex_numbering;
 
-    /// The nodes this rank owns and those of its cloud; node arrays below
-    /// are indexed by the local numbers of this partition (owned first).
-    std::shared_ptr<Utilities::MPI::Partitioner> node_partition;
-    /// Whether the cloud holds every node (one rank, or a small grid).
-    bool complete_cloud = true;
-    /// Current node positions and support radii, by local index.
-    mutable std::vector<Point<dim>> nodes;
-    mutable std::vector<double>     radii;
-    mutable std::vector<double>     inverse_radii;
+    /// The nodes this rank owns and those of its cloud, with their
+    /// positions and radii; node arrays below are indexed by the local
+    /// numbers of its partition (owned first).
+    mutable MaxEntNodeCloud<dim> cloud;
+    mutable std::vector<double>  inverse_radii;
     /// Bounding boxes of the supports and their R-tree.
     mutable std::vector<BoundingBox<dim>> supports;
     struct SearchTree;
@@ -197,20 +184,6 @@ namespace MpmOtm
     mutable std::vector<BoundingBox<dim>> cell_boxes;
     mutable std::vector<unsigned int>     cell_node_offsets;
     mutable std::vector<unsigned int>     cell_nodes;
-    /// For the cloud check when the nodes move: the owned nodes' and the
-    /// owned cells' bounding boxes at set-up, and the halo H.
-    mutable std::vector<Point<dim>>       initial_owned_nodes;
-    mutable std::vector<BoundingBox<dim>> initial_cell_boxes;
-    double                                halo = 0;
-    /// What the last update of moving nodes found: the largest support
-    /// radius on all ranks and the centre and half diagonal of the box of
-    /// all nodes' displacements since set-up; and whether it checked the
-    /// cloud without the material points (for grid output), so that the
-    /// next evaluation checks them.
-    mutable double         largest_radius = 0;
-    mutable Tensor<1, dim> displacement_centre;
-    mutable double         displacement_spread = 0;
-    mutable bool           points_unchecked    = false;
     /// Multipliers of the last point solved: the next one's first guess.
     mutable Tensor<1, dim> previous_lambda;
     /// Work arrays of one point, kept to avoid allocation per point.
@@ -227,31 +200,6 @@ namespace MpmOtm
     mutable std::vector<types::global_dof_index> point_indices;
     mutable std::vector<double>                  point_values;
     mutable std::vector<Tensor<1, dim>>          point_gradients;
-
-    /**
-     * Find the cloud of other ranks' nodes (see the class documentation)
-     * and set up node_partition. Collective.
-     */
-    void
-    find_node_cloud();
-
-    /**
-     * Under MPI: stop the run on all ranks if on some rank with a partial
-     * cloud a locally owned cell (with its points, if @p material_points)
-     * moved so far relative to the nodes outside the cloud that one of them
-     * could reach it. Uses the largest support radius and the centre and
-     * half diagonal of the box of all nodes' displacements that the last
-     * update of the nodes found. Collective.
-     */
-    void
-    stop_if_cloud_too_small(const MaterialPoints<dim> *material_points) const;
-
-    /**
-     * The local part of stop_if_cloud_too_small(): a description of the
-     * first locally owned cell that fails the check, or an empty string.
-     */
-    std::string
-    cloud_problem(const MaterialPoints<dim> *material_points) const;
 
     /**
      * The values and gradients at @p x of the functions of the
