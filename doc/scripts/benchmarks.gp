@@ -207,7 +207,7 @@ plot "data/B3-sigma11.dat" using 1:3 with lines lw 3 lc rgb "gray" title "exact"
      "data/B3-sigma11.dat" using 1:4 with points pt 5 ps 0.6 lc rgb "blue" title "mpm-otm, OTM-P1", \
      "data/B3-sigma11.dat" using 1:5 with points pt 9 ps 0.6 lc rgb "dark-green" title "mpm-otm, BSMPM p = 2", \
      "data/B3-sigma11.dat" using 1:6 with points pt 4 ps 0.6 lc rgb "black" title "mpm-otm, unified p = 2", \
-     "data/B3-sigma11.dat" using 1:7 with points pt 11 ps 0.6 lc rgb "orange" title "mpm-otm, MPM-maxent d_{max} = 3", \
+     "data/B3-sigma11.dat" using 1:7 with points pt 11 ps 0.6 lc rgb "orange" title "mpm-otm, MPM-maxent d_{max} = 3, consistent mass", \
      "data/B3-sigma11.dat" using 1:8 with points pt 13 ps 0.6 lc rgb "purple" title "mpm-otm, OTM-maxent d_{max} = 2"
 
 set key inside noreverse Right vertical maxcols auto
@@ -252,7 +252,8 @@ set key below center horizontal maxcols 3 Left reverse
 plot "data/B3-sigma11.dat" using 1:(100 * ($4 - $3) / 5.5488e5) with points pt 5 ps 0.5 lc rgb "blue" title "mpm-otm, OTM-P1 (to +-6 %)", \
      "data/B3-sigma11.dat" using 1:(100 * ($5 - $3) / 5.5488e5) with linespoints pt 9 ps 0.5 lc rgb "dark-green" title "mpm-otm, BSMPM p = 2", \
      "data/B3-sigma11.dat" using 1:(100 * ($6 - $3) / 5.5488e5) with linespoints pt 4 ps 0.5 lc rgb "black" title "mpm-otm, unified p = 2", \
-     "data/B3-sigma11.dat" using 1:(100 * ($7 - $3) / 5.5488e5) with linespoints pt 11 ps 0.5 lc rgb "orange" title "mpm-otm, MPM-maxent d_{max} = 3", \
+     "data/B3-sigma11.dat" using 1:(100 * ($7 - $3) / 5.5488e5) with linespoints pt 11 ps 0.5 lc rgb "orange" title "mpm-otm, MPM-maxent d_{max} = 3, consistent mass", \
+     "data/B3-sigma11.dat" using 1:(100 * ($9 - $3) / 5.5488e5) with linespoints pt 10 ps 0.5 lc rgb "brown" title "mpm-otm, MPM-maxent d_{max} = 3, lumped mass", \
      "data/B3-sigma11.dat" using 1:(100 * ($8 - $3) / 5.5488e5) with linespoints pt 13 ps 0.5 lc rgb "purple" title "mpm-otm, OTM-maxent d_{max} = 2"
 unset yrange
 

@@ -1,5 +1,10 @@
+#include <deal.II/base/index_set.h>
+#include <deal.II/base/mpi.h>
 #include <deal.II/lac/solver_cg.h>
 #include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/trilinos_precondition.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_sparsity_pattern.h>
 
 #include <mpm_otm/base/plugins.h>
 #include <mpm_otm/grid_system/consistent_mass_matrix.h>
@@ -90,84 +95,64 @@ namespace MpmOtm
     };
 
     /**
-     * y = M x with the matrix in compressed rows on the locally stored
-     * coefficients (ghosts included), and the identity on the excluded
-     * coefficients.
+     * y = M x with the assembled matrix, and the identity on the excluded
+     * coefficients (whose entries of x are zero, see
+     * multiply_with_exclusions()).
      */
-    template <int dim>
-    class SparseMassOperator
+    template <typename VectorType>
+    class MatrixMassOperator
     {
     public:
-      using VectorType = typename NodalSystem<dim>::VectorType;
-
-      SparseMassOperator(const std::vector<unsigned int> &row_offsets,
-                         const std::vector<unsigned int> &columns,
-                         const std::vector<double>       &entries,
-                         const std::vector<unsigned int> &excluded)
-        : row_offsets(row_offsets)
-        , columns(columns)
-        , entries(entries)
+      MatrixMassOperator(const TrilinosWrappers::SparseMatrix &matrix,
+                         const std::vector<unsigned int>      &excluded)
+        : matrix(matrix)
         , excluded(excluded)
       {}
 
       void
       vmult(VectorType &dst, const VectorType &src) const
       {
-        multiply_with_exclusions(dst,
-                                 src,
-                                 excluded,
-                                 [&](const double *x, double *y) {
-                                   for (unsigned int row = 0;
-                                        row + 1 < row_offsets.size();
-                                        ++row)
-                                     {
-                                       double sum = 0.;
-                                       for (unsigned int e = row_offsets[row];
-                                            e < row_offsets[row + 1];
-                                            ++e)
-                                         sum += entries[e] * x[columns[e]];
-                                       y[row] += sum;
-                                     }
-                                 });
+        matrix.vmult(dst, src);
+        for (const unsigned int i : excluded)
+          dst.local_element(i) = src.local_element(i);
       }
 
     private:
-      const std::vector<unsigned int> &row_offsets;
-      const std::vector<unsigned int> &columns;
-      const std::vector<double>       &entries;
-      const std::vector<unsigned int> &excluded;
+      const TrilinosWrappers::SparseMatrix &matrix;
+      const std::vector<unsigned int>      &excluded;
     };
 
 
 
     /**
-     * Jacobi preconditioner with the lumped masses.
+     * A preconditioner of the whole matrix applied to the coefficients that
+     * are not excluded: its result is set to zero on the excluded ones,
+     * which CG then keeps at zero. Symmetric and positive definite on the
+     * others when the preconditioner is.
      */
-    template <int dim>
-    class LumpedMassPreconditioner
+    template <typename VectorType>
+    class FreeCoefficientPreconditioner
     {
     public:
-      using VectorType = typename NodalSystem<dim>::VectorType;
-
-      explicit LumpedMassPreconditioner(const VectorType &lumped_mass)
-        : lumped_mass(lumped_mass)
+      FreeCoefficientPreconditioner(
+        const TrilinosWrappers::PreconditionBase &preconditioner,
+        const std::vector<unsigned int>          &excluded)
+        : preconditioner(preconditioner)
+        , excluded(excluded)
       {}
 
       void
       vmult(VectorType &dst, const VectorType &src) const
       {
-        for (unsigned int i = 0; i < dst.locally_owned_size(); ++i)
-          {
-            const double m = lumped_mass.local_element(i);
-            dst.local_element(i) =
-              (m > 0.) ? src.local_element(i) / m : src.local_element(i);
-          }
+        preconditioner.vmult(dst, src);
+        for (const unsigned int i : excluded)
+          dst.local_element(i) = 0.;
       }
 
     private:
-      const VectorType &lumped_mass;
+      const TrilinosWrappers::PreconditionBase &preconditioner;
+      const std::vector<unsigned int>          &excluded;
     };
-
 
 
     /**
@@ -180,21 +165,21 @@ namespace MpmOtm
      * coefficients get the identity; a block that is not numerically
      * positive definite gets its lumped masses.
      */
-    template <int dim>
+    template <typename VectorType>
     class NodeBlockPreconditioner
     {
     public:
-      using VectorType = typename NodalSystem<dim>::VectorType;
-
       /**
-       * Factorize the blocks; @p block_entries[q] holds M_ij for every
-       * function i and j the function q of i's node.
+       * Factorize the blocks: @p blocks holds, row by row, the n x n
+       * diagonal block of the matrix of each node, whose n = @p block_size
+       * functions are consecutive locally owned coefficients.
        */
-      NodeBlockPreconditioner(const std::vector<VectorType>   &block_entries,
+      NodeBlockPreconditioner(const std::vector<double>       &blocks,
+                              const unsigned int               block_size,
                               const VectorType                &lumped_mass,
                               const std::vector<unsigned int> &excluded)
-        : block_size(block_entries.size())
-        , factors(lumped_mass.locally_owned_size() * block_size)
+        : block_size(block_size)
+        , factors(blocks)
       {
         const unsigned int n_owned = lumped_mass.locally_owned_size();
         Assert(n_owned % block_size == 0,
@@ -208,10 +193,8 @@ namespace MpmOtm
             double *L = &factors[start * n];
             for (unsigned int a = 0; a < n; ++a)
               for (unsigned int b = 0; b < n; ++b)
-                L[a * n + b] =
-                  (is_excluded[start + a] || is_excluded[start + b]) ?
-                    (a == b ? 1. : 0.) :
-                    block_entries[b].local_element(start + a);
+                if (is_excluded[start + a] || is_excluded[start + b])
+                  L[a * n + b] = (a == b ? 1. : 0.);
             if (!cholesky(L))
               for (unsigned int a = 0; a < n; ++a)
                 for (unsigned int b = 0; b < n; ++b)
@@ -294,9 +277,86 @@ namespace MpmOtm
 
 
   template <int dim>
+  ConsistentMassMatrix<dim>::ConsistentMassMatrix() = default;
+
+
+
+  template <int dim>
+  ConsistentMassMatrix<dim>::~ConsistentMassMatrix() = default;
+
+
+
+  template <int dim>
   void
-  ConsistentMassMatrix<dim>::declare_parameters(ParameterHandler &)
-  {}
+  ConsistentMassMatrix<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    prm.declare_entry(
+      "Mass matrix preconditioner",
+      "diagonal",
+      Patterns::Selection("diagonal|direct per rank|algebraic multigrid"),
+      "How conjugate gradients are preconditioned when the mass matrix is "
+      "consistent or partially lumped. diagonal: the lumped masses, or, "
+      "for families with several functions per node (Powell-Sabin), the "
+      "inverses of the nodes' blocks of the matrix; cheap, and enough for "
+      "the linear, B-spline and Powell-Sabin families. algebraic multigrid: "
+      "Trilinos ML, set up from the matrix every step; for ill-conditioned "
+      "matrices, as those of max-ent functions with a large 'Max-ent "
+      "support factor' (2D, d_max = 3), on any number of ranks. direct per "
+      "rank: a sparse direct factorisation of each rank's rows (Trilinos "
+      "Ifpack with Amesos), an exact solve on one rank but only block "
+      "Jacobi between ranks.");
+  }
+
+
+
+  template <int dim>
+  void
+  ConsistentMassMatrix<dim>::parse_parameters(ParameterHandler &prm)
+  {
+    const std::string name = prm.get("Mass matrix preconditioner");
+    preconditioner_type =
+      (name == "direct per rank") ?
+        Preconditioner::direct_per_rank :
+        ((name == "algebraic multigrid") ? Preconditioner::algebraic_multigrid :
+                                           Preconditioner::diagonal);
+  }
+
+
+
+  template <int dim>
+  bool
+  ConsistentMassMatrix<dim>::find_groups(
+    const ParticleShapeData<dim> &shape_data)
+  {
+    std::vector<unsigned int> previous_offsets;
+    std::vector<unsigned int> previous_indices;
+    previous_offsets.swap(group_offsets);
+    previous_indices.swap(group_indices);
+    group_offsets.assign(1, 0);
+    group_indices.clear();
+    group_first_point.clear();
+    unsigned int group_start = 0;
+    for (unsigned int k = 0; k < shape_data.n_particles(); ++k)
+      {
+        const unsigned int begin = shape_data.offsets[k];
+        const unsigned int n     = shape_data.offsets[k + 1] - begin;
+        Assert(n > 0, ExcMessage("A point without shape functions."));
+        const unsigned int *indices = &shape_data.indices[begin];
+        const bool          same =
+          k > 0 && group_indices.size() - group_start == n &&
+          std::equal(indices, indices + n, group_indices.begin() + group_start);
+        if (!same)
+          {
+            group_start = group_indices.size();
+            group_first_point.push_back(k);
+            group_indices.insert(group_indices.end(), indices, indices + n);
+            group_offsets.push_back(group_indices.size());
+          }
+      }
+    group_first_point.push_back(shape_data.n_particles());
+    return group_offsets != previous_offsets ||
+           group_indices != previous_indices;
+  }
 
 
 
@@ -305,44 +365,87 @@ namespace MpmOtm
   ConsistentMassMatrix<dim>::assemble(const NodalSystem<dim>       &system,
                                       const ParticleShapeData<dim> &shape_data)
   {
-    // Consecutive points with the same function indices form a group.
-    const std::vector<unsigned int> previous_offsets = group_offsets;
-    const std::vector<unsigned int> previous_indices = group_indices;
-    group_offsets.assign(1, 0);
-    group_indices.clear();
-    group_of_point.resize(shape_data.n_particles());
-    std::size_t  point_pass_cost = 0;
-    std::size_t  block_cost      = 0;
-    unsigned int group_start     = 0;
-    for (unsigned int k = 0; k < shape_data.n_particles(); ++k)
-      {
-        const unsigned int  begin   = shape_data.offsets[k];
-        const unsigned int  n       = shape_data.offsets[k + 1] - begin;
-        const unsigned int *indices = &shape_data.indices[begin];
-        Assert(n > 0, ExcMessage("A point without shape functions."));
-        point_pass_cost += 2 * n;
-        const bool same =
-          k > 0 && group_indices.size() - group_start == n &&
-          std::equal(indices, indices + n, group_indices.begin() + group_start);
-        if (!same)
-          {
-            group_start = group_indices.size();
-            group_indices.insert(group_indices.end(), indices, indices + n);
-            group_offsets.push_back(group_indices.size());
-            block_cost += std::size_t(n) * n;
-          }
-        group_of_point[k] = group_offsets.size() - 2;
-      }
+    const bool groups_changed = find_groups(shape_data);
 
     // The matrix pays when a product with it (at most one entry per pair of
-    // functions of a group) is cheaper than a point pass.
-    use_matrix = block_cost < point_pass_cost;
+    // functions of a group) is cheaper than a point pass. All ranks decide
+    // together: the products communicate differently.
+    std::vector<double> local_counts(3, 0.);
+    for (unsigned int g = 0; g + 1 < group_offsets.size(); ++g)
+      local_counts[0] += Utilities::fixed_power<2>(
+        double(group_offsets[g + 1] - group_offsets[g]));
+    local_counts[1] = 2. * shape_data.indices.size();
+    local_counts[2] = groups_changed ? 1. : 0.;
+    std::vector<double> counts(3);
+    Utilities::MPI::sum(local_counts,
+                        system.lumped_mass.get_mpi_communicator(),
+                        counts);
+
+    const bool preconditioner_needs_matrix =
+      preconditioner_type != Preconditioner::diagonal ||
+      system.functions_per_node() > 1;
+    use_matrix = preconditioner_needs_matrix || counts[0] < counts[1];
     if (use_matrix)
-      assemble_matrix(system, shape_data, previous_offsets, previous_indices);
-    if (system.functions_per_node() > 1)
-      assemble_node_blocks(system, shape_data);
+      {
+        if (!has_pattern || counts[2] > 0.)
+          build_sparsity(system);
+        assemble_matrix(system, shape_data);
+      }
     else
-      node_block_entries.clear();
+      has_pattern = false;
+
+    matrix_preconditioner.reset();
+    node_blocks.clear();
+    if (preconditioner_type != Preconditioner::diagonal)
+      initialize_matrix_preconditioner(system);
+    else if (system.functions_per_node() > 1)
+      extract_node_blocks(system);
+    else
+      {
+        VectorType &inverse = inverse_lumped_mass.get_vector();
+        inverse.reinit(system.lumped_mass, true);
+        for (unsigned int i = 0; i < inverse.locally_owned_size(); ++i)
+          {
+            const double m           = system.lumped_mass.local_element(i);
+            inverse.local_element(i) = (m > 0.) ? 1. / m : 1.;
+          }
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  ConsistentMassMatrix<dim>::build_sparsity(const NodalSystem<dim> &system)
+  {
+    const Utilities::MPI::Partitioner &partitioner = system.partitioner();
+    const IndexSet &owned = partitioner.locally_owned_range();
+    IndexSet        relevant(owned);
+    relevant.add_indices(partitioner.ghost_indices());
+
+    // Ghost rows are written here and sent to their owners in compress().
+    TrilinosWrappers::SparsityPattern pattern(
+      owned,
+      owned,
+      relevant,
+      system.lumped_mass.get_mpi_communicator());
+    std::vector<types::global_dof_index> global;
+    for (unsigned int g = 0; g + 1 < group_offsets.size(); ++g)
+      {
+        global.clear();
+        for (unsigned int a = group_offsets[g]; a < group_offsets[g + 1]; ++a)
+          global.push_back(partitioner.local_to_global(group_indices[a]));
+        for (const types::global_dof_index row : global)
+          pattern.add_entries(row, global.begin(), global.end());
+      }
+    for (const types::global_dof_index row : owned)
+      pattern.add(row, row);
+    pattern.compress();
+
+    if (!matrix)
+      matrix = std::make_unique<TrilinosWrappers::SparseMatrix>();
+    matrix->reinit(pattern);
+    has_pattern = true;
   }
 
 
@@ -350,166 +453,126 @@ namespace MpmOtm
   template <int dim>
   void
   ConsistentMassMatrix<dim>::assemble_matrix(
-    const NodalSystem<dim>          &system,
-    const ParticleShapeData<dim>    &shape_data,
-    const std::vector<unsigned int> &previous_offsets,
-    const std::vector<unsigned int> &previous_indices)
+    const NodalSystem<dim>       &system,
+    const ParticleShapeData<dim> &shape_data)
   {
-    if (group_offsets != previous_offsets || group_indices != previous_indices)
-      build_sparsity(system.partitioner().locally_owned_size() +
-                     system.partitioner().n_ghost_indices());
+    const Utilities::MPI::Partitioner &partitioner = system.partitioner();
 
-    // Sum m_p phi_a phi_b over the points of each group (a run of
-    // consecutive points) into a dense block, its upper triangle, then add
-    // the block to the matrix entries.
-    entries.assign(columns.size(), 0.);
-    for (unsigned int k = 0; k < shape_data.n_particles();)
+    // Sum m_p phi_a phi_b over the points of each group into a dense block,
+    // its upper triangle, then add the block to the matrix.
+    *matrix = 0.;
+    std::vector<double>                  block;
+    std::vector<types::global_dof_index> global;
+    for (unsigned int g = 0; g + 1 < group_offsets.size(); ++g)
       {
-        const unsigned int group = group_of_point[k];
-        const unsigned int n = group_offsets[group + 1] - group_offsets[group];
-        group_block.assign(n * n, 0.);
-        for (; k < shape_data.n_particles() && group_of_point[k] == group; ++k)
+        const unsigned int n = group_offsets[g + 1] - group_offsets[g];
+        block.assign(n * n, 0.);
+        for (unsigned int k = group_first_point[g];
+             k < group_first_point[g + 1];
+             ++k)
           {
             const double  m   = system.particle_mass[k];
             const double *phi = &shape_data.values[shape_data.offsets[k]];
             for (unsigned int a = 0; a < n; ++a)
               {
                 const double m_phi = m * phi[a];
-                double      *row   = &group_block[a * n];
+                double      *row   = &block[a * n];
                 for (unsigned int b = a; b < n; ++b)
                   row[b] += m_phi * phi[b];
               }
           }
-        const unsigned int *position = &entry_of_block[block_offsets[group]];
         for (unsigned int a = 0; a < n; ++a)
-          {
-            entries[position[a * n + a]] += group_block[a * n + a];
-            for (unsigned int b = a + 1; b < n; ++b)
-              {
-                entries[position[a * n + b]] += group_block[a * n + b];
-                entries[position[b * n + a]] += group_block[a * n + b];
-              }
-          }
+          for (unsigned int b = 0; b < a; ++b)
+            block[a * n + b] = block[b * n + a];
+
+        global.resize(n);
+        for (unsigned int a = 0; a < n; ++a)
+          global[a] =
+            partitioner.local_to_global(group_indices[group_offsets[g] + a]);
+        for (unsigned int a = 0; a < n; ++a)
+          matrix->add(global[a], n, global.data(), &block[a * n], false);
       }
+    matrix->compress(VectorOperation::add);
   }
 
 
 
   template <int dim>
   void
-  ConsistentMassMatrix<dim>::assemble_node_blocks(
-    const NodalSystem<dim>       &system,
-    const ParticleShapeData<dim> &shape_data)
+  ConsistentMassMatrix<dim>::extract_node_blocks(const NodalSystem<dim> &system)
   {
-    const unsigned int                 n = system.functions_per_node();
     const Utilities::MPI::Partitioner &partitioner = system.partitioner();
-    const unsigned int                 n_local =
-      partitioner.locally_owned_size() + partitioner.n_ghost_indices();
-    global_of_local.resize(n_local);
-    for (unsigned int i = 0; i < n_local; ++i)
-      global_of_local[i] = partitioner.local_to_global(i);
-
-    node_block_entries.resize(n);
-    for (VectorType &entries_q : node_block_entries)
+    const unsigned int                 n = system.functions_per_node();
+    const unsigned int n_owned           = partitioner.locally_owned_size();
+    node_blocks.resize(std::size_t(n_owned) * n);
+    for (unsigned int i = 0; i < n_owned; ++i)
       {
-        if (entries_q.get_partitioner() != system.lumped_mass.get_partitioner())
-          entries_q.reinit(system.lumped_mass.get_partitioner());
-        entries_q = 0.;
+        const unsigned int node_start = i - i % n;
+        for (unsigned int b = 0; b < n; ++b)
+          node_blocks[std::size_t(i) * n + b] =
+            matrix->el(partitioner.local_to_global(i),
+                       partitioner.local_to_global(node_start + b));
       }
-    const auto add =
-      [&](const unsigned int i, const unsigned int j, const double value) {
-        if (global_of_local[i] / n == global_of_local[j] / n)
-          node_block_entries[global_of_local[j] % n].local_element(i) += value;
-      };
-    if (use_matrix)
-      for (unsigned int row = 0; row + 1 < row_offsets.size(); ++row)
-        for (unsigned int e = row_offsets[row]; e < row_offsets[row + 1]; ++e)
-          add(row, columns[e], entries[e]);
-    else
-      for (unsigned int k = 0; k < shape_data.n_particles(); ++k)
-        {
-          const unsigned int  begin   = shape_data.offsets[k];
-          const unsigned int  end     = shape_data.offsets[k + 1];
-          const double        m       = system.particle_mass[k];
-          const double       *phi     = &shape_data.values[0];
-          const unsigned int *indices = &shape_data.indices[0];
-          for (unsigned int a = begin; a < end; ++a)
-            for (unsigned int b = begin; b < end; ++b)
-              add(indices[a], indices[b], m * phi[a] * phi[b]);
-        }
-    for (VectorType &entries_q : node_block_entries)
-      entries_q.compress(VectorOperation::add);
   }
 
 
 
   template <int dim>
   void
-  ConsistentMassMatrix<dim>::build_sparsity(const unsigned int n_rows)
+  ConsistentMassMatrix<dim>::initialize_matrix_preconditioner(
+    const NodalSystem<dim> &system)
   {
-    const unsigned int n_groups = group_offsets.size() - 1;
+    // The rows of functions that no point reaches are empty; a one on their
+    // diagonal makes the matrix the preconditioners factorise regular.
+    if (!regularized_matrix)
+      regularized_matrix = std::make_unique<TrilinosWrappers::SparseMatrix>();
+    regularized_matrix->copy_from(*matrix);
+    for (const types::global_dof_index row :
+         system.partitioner().locally_owned_range())
+      if (matrix->diag_element(row) == 0.)
+        regularized_matrix->set(row, row, 1.);
+    regularized_matrix->compress(VectorOperation::insert);
 
-    // The groups of each row (a row's function appears in them).
-    std::vector<unsigned int> groups_of_row_offsets(n_rows + 1, 0);
-    for (const unsigned int i : group_indices)
-      ++groups_of_row_offsets[i + 1];
-    for (unsigned int i = 0; i < n_rows; ++i)
-      groups_of_row_offsets[i + 1] += groups_of_row_offsets[i];
-    std::vector<unsigned int> groups_of_row(group_indices.size());
-    std::vector<unsigned int> place_in_group(group_indices.size());
-    {
-      std::vector<unsigned int> next(groups_of_row_offsets.begin(),
-                                     groups_of_row_offsets.end() - 1);
-      for (unsigned int g = 0; g < n_groups; ++g)
-        for (unsigned int a = group_offsets[g]; a < group_offsets[g + 1]; ++a)
-          {
-            const unsigned int slot = next[group_indices[a]]++;
-            groups_of_row[slot]     = g;
-            place_in_group[slot]    = a - group_offsets[g];
-          }
-    }
-
-    block_offsets.resize(n_groups);
-    std::size_t block_size = 0;
-    for (unsigned int g = 0; g < n_groups; ++g)
+    std::string failure;
+    try
       {
-        block_offsets[g]    = block_size;
-        const std::size_t n = group_offsets[g + 1] - group_offsets[g];
-        block_size += n * n;
-      }
-    entry_of_block.resize(block_size);
-
-    // Row by row: the columns are the union of the row's groups' functions;
-    // each group's block entry (a, b) of this row points to its column.
-    row_offsets.assign(1, 0);
-    columns.clear();
-    std::vector<unsigned int> entry_of_column(n_rows,
-                                              numbers::invalid_unsigned_int);
-    for (unsigned int row = 0; row < n_rows; ++row)
-      {
-        const unsigned int row_start = columns.size();
-        for (unsigned int s = groups_of_row_offsets[row];
-             s < groups_of_row_offsets[row + 1];
-             ++s)
+        switch (preconditioner_type)
           {
-            const unsigned int  g = groups_of_row[s];
-            const unsigned int  n = group_offsets[g + 1] - group_offsets[g];
-            const unsigned int *indices = &group_indices[group_offsets[g]];
-            unsigned int       *position =
-              &entry_of_block[block_offsets[g] + place_in_group[s] * n];
-            for (unsigned int b = 0; b < n; ++b)
+            case Preconditioner::direct_per_rank:
               {
-                unsigned int &entry = entry_of_column[indices[b]];
-                if (entry == numbers::invalid_unsigned_int || entry < row_start)
-                  {
-                    entry = columns.size();
-                    columns.push_back(indices[b]);
-                  }
-                position[b] = entry;
+                auto direct = std::make_unique<
+                  TrilinosWrappers::PreconditionBlockwiseDirect>();
+                direct->initialize(*regularized_matrix);
+                matrix_preconditioner = std::move(direct);
+                break;
               }
+            case Preconditioner::algebraic_multigrid:
+              {
+                auto multigrid =
+                  std::make_unique<TrilinosWrappers::PreconditionAMG>();
+                multigrid->initialize(*regularized_matrix);
+                matrix_preconditioner = std::move(multigrid);
+                break;
+              }
+            case Preconditioner::diagonal:
+              Assert(false, ExcInternalError());
           }
-        row_offsets.push_back(columns.size());
       }
+    catch (const std::exception &error)
+      {
+        failure = error.what();
+      }
+    const bool failed_somewhere =
+      Utilities::MPI::max(failure.empty() ? 0 : 1,
+                          system.lumped_mass.get_mpi_communicator()) == 1;
+    AssertThrow(!failed_somewhere,
+                ExcMessage("The preconditioner of the consistent mass matrix "
+                           "('Mass matrix preconditioner') could not be set "
+                           "up" +
+                           (failure.empty() ? std::string(" on another rank") :
+                                              ": " + failure) +
+                           " Choose another 'Mass matrix preconditioner', or "
+                           "'set Mass matrix = lumped'."));
   }
 
 
@@ -522,9 +585,9 @@ namespace MpmOtm
                                    VectorType                   &product) const
   {
     const std::vector<unsigned int> none;
+    product.zero_out_ghost_values();
     if (use_matrix)
-      SparseMassOperator<dim>(row_offsets, columns, entries, none)
-        .vmult(product, vector);
+      MatrixMassOperator<VectorType>(*matrix, none).vmult(product, vector);
     else
       ParticleMassOperator<dim>(shape_data, system.particle_mass, none)
         .vmult(product, vector);
@@ -609,29 +672,34 @@ namespace MpmOtm
 
     SolverControl        control(1000, 1e-13 * norm, false, false);
     SolverCG<VectorType> cg(control);
-    const auto           solve_with = [&](const auto &preconditioner) {
-      if (use_matrix)
+    const auto           solve_with = [&](const auto &mass) {
+      if (matrix_preconditioner)
         cg.solve(
-          SparseMassOperator<dim>(row_offsets, columns, entries, prescribed),
+          mass,
           solution,
           rhs,
-          preconditioner);
+          FreeCoefficientPreconditioner<VectorType>(*matrix_preconditioner,
+                                                    prescribed));
+      else if (system.functions_per_node() > 1)
+        cg.solve(
+          mass,
+          solution,
+          rhs,
+          NodeBlockPreconditioner<VectorType>(node_blocks,
+                                              system.functions_per_node(),
+                                              system.lumped_mass,
+                                              prescribed));
       else
-        cg.solve(ParticleMassOperator<dim>(shape_data,
-                                           system.particle_mass,
-                                           prescribed),
-                 solution,
-                 rhs,
-                 preconditioner);
+        cg.solve(mass, solution, rhs, inverse_lumped_mass);
     };
     try
       {
-        if (node_block_entries.empty())
-          solve_with(LumpedMassPreconditioner<dim>(system.lumped_mass));
+        if (use_matrix)
+          solve_with(MatrixMassOperator<VectorType>(*matrix, prescribed));
         else
-          solve_with(NodeBlockPreconditioner<dim>(node_block_entries,
-                                                  system.lumped_mass,
-                                                  prescribed));
+          solve_with(ParticleMassOperator<dim>(shape_data,
+                                               system.particle_mass,
+                                               prescribed));
       }
     catch (const SolverControl::NoConvergence &failure)
       {
@@ -645,7 +713,8 @@ namespace MpmOtm
                    "known: a shape function supported by almost no material "
                    "(thesis Ch. 5), and shape functions whose supports overlap "
                    "widely, as max-ent functions with a large 'Max-ent "
-                   "support factor' in 2D and 3D. Use 'set Mass matrix = "
+                   "support factor' in 2D and 3D. Use 'set Mass matrix "
+                   "preconditioner = algebraic multigrid', 'set Mass matrix = "
                    "lumped', or a smaller 'Max-ent support factor'.";
         AssertThrow(false, ExcMessage(message.str()));
       }

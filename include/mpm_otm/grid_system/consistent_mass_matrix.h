@@ -1,23 +1,45 @@
 #ifndef mpm_otm_grid_system_consistent_mass_matrix_h
 #define mpm_otm_grid_system_consistent_mass_matrix_h
 
+#include <deal.II/lac/diagonal_matrix.h>
+
 #include <mpm_otm/grid_system/mass_matrix.h>
+
+#include <memory>
+#include <utility>
+#include <vector>
+
+namespace dealii::TrilinosWrappers
+{
+  class PreconditionBase;
+  class SparseMatrix;
+} // namespace dealii::TrilinosWrappers
 
 namespace MpmOtm
 {
   /**
    * The consistent mass matrix (journal Eq. 19), solved with conjugate
-   * gradients preconditioned by the lumped masses, or, for families with
-   * several functions per node (Powell-Sabin), by the inverses of the
-   * nodes' diagonal blocks. Points with the same
-   * functions (the points of one cell, for every family) form a group; the
-   * entries sum_p m_p phi_i phi_j are summed once per step into one matrix in
-   * compressed rows on the locally stored coefficients, whose pattern (the
-   * pairs of functions that share a group) is rebuilt only when the groups
-   * change. Where that does not pay (few points per set of functions), a
-   * product is a pass over the points, sum_p m_p phi_i (sum_j phi_j x_j).
-   * Both work for every family and in parallel. A solve that does not
-   * converge stops the run.
+   * gradients. Points with the same functions (the points of one cell, for
+   * every family but max-ent) form a group; the entries
+   * sum_p m_p phi_i phi_j are summed once per step, group by group, into a
+   * distributed Trilinos matrix whose pattern (the pairs of functions that
+   * share a group) is rebuilt only when the groups change. Where that does
+   * not pay (few points per set of functions, as with max-ent or OTM) and
+   * the preconditioner needs no matrix, a product is a pass over the points,
+   * sum_p m_p phi_i (sum_j phi_j x_j), instead.
+   *
+   * The preconditioner is the parameter 'Mass matrix preconditioner': the
+   * lumped masses, or the inverses of the nodes' diagonal blocks for
+   * families with several functions per node (Powell-Sabin, whose three
+   * functions of a vertex are far from orthogonal), factorised per solve
+   * with the prescribed coefficients at the identity and the lumped masses
+   * for a block that is not positive definite (Ifpack's block relaxation
+   * has no such fallback, and the deactivation remedy of thesis Sect. 5.2
+   * leaves singular blocks); or algebraic multigrid (Trilinos ML) or a
+   * sparse direct factorisation of each rank's rows (Ifpack with Amesos),
+   * set up once per step from the whole matrix and applied to the
+   * coefficients that are not prescribed. A solve that does not converge
+   * stops the run.
    */
   template <int dim>
   class ConsistentMassMatrix : public MassMatrix<dim>
@@ -25,11 +47,19 @@ namespace MpmOtm
   public:
     using VectorType = typename MassMatrix<dim>::VectorType;
 
+    ConsistentMassMatrix();
+
+    ~ConsistentMassMatrix() override;
+
     static void
     declare_parameters(ParameterHandler &prm);
 
+    void
+    parse_parameters(ParameterHandler &prm) override;
+
     /**
-     * Assemble the matrix from the point groups, or choose the point pass.
+     * Assemble the matrix from the point groups, or choose the point pass,
+     * and set up the preconditioner. Collective.
      */
     void
     assemble(const NodalSystem<dim>       &system,
@@ -66,54 +96,76 @@ namespace MpmOtm
 
   private:
     /**
-     * Sum the entries of the matrix from the points, rebuilding its pattern
-     * if the groups differ from @p previous_offsets and @p previous_indices.
+     * The preconditioners of 'Mass matrix preconditioner'.
      */
-    void
-    assemble_matrix(const NodalSystem<dim>          &system,
-                    const ParticleShapeData<dim>    &shape_data,
-                    const std::vector<unsigned int> &previous_offsets,
-                    const std::vector<unsigned int> &previous_indices);
+    enum class Preconditioner
+    {
+      diagonal,
+      direct_per_rank,
+      algebraic_multigrid
+    };
 
     /**
-     * Fill node_block_entries, summed over the ranks.
+     * Find the groups of consecutive points with the same functions; return
+     * whether they differ from the previous step's.
      */
-    void
-    assemble_node_blocks(const NodalSystem<dim>       &system,
-                         const ParticleShapeData<dim> &shape_data);
+    bool
+    find_groups(const ParticleShapeData<dim> &shape_data);
 
     /**
-     * The compressed rows of the matrix on @p n_rows locally stored
-     * coefficients and, for every entry of every group's block, the matrix
-     * entry it adds to.
+     * Build the matrix's pattern from the groups: every pair of functions of
+     * a group, and the diagonal of every locally owned row. Collective.
      */
     void
-    build_sparsity(const unsigned int n_rows);
+    build_sparsity(const NodalSystem<dim> &system);
 
+    /**
+     * Sum the entries of the matrix from the points of each group.
+     * Collective.
+     */
+    void
+    assemble_matrix(const NodalSystem<dim>       &system,
+                    const ParticleShapeData<dim> &shape_data);
+
+    /**
+     * Copy the nodes' diagonal blocks of the matrix into node_blocks.
+     */
+    void
+    extract_node_blocks(const NodalSystem<dim> &system);
+
+    /**
+     * Set up the algebraic multigrid or direct preconditioner of the
+     * matrix. Collective; every rank stops if the set-up fails on one.
+     */
+    void
+    initialize_matrix_preconditioner(const NodalSystem<dim> &system);
+
+    Preconditioner preconditioner_type = Preconditioner::diagonal;
     /// Whether the products use the assembled matrix (or a point pass).
     bool use_matrix = false;
+    /// Whether the matrix has the pattern of the current groups.
+    bool has_pattern = false;
     /// Start of each group's function indices in group_indices.
     std::vector<unsigned int> group_offsets;
     /// Local indices of the functions of each group.
     std::vector<unsigned int> group_indices;
-    /// The group of each point.
-    std::vector<unsigned int> group_of_point;
-    /// Start of each group's row-major block in entry_of_block.
-    std::vector<std::size_t> block_offsets;
-    /// The matrix entry of each group's block entry (a, b).
-    std::vector<unsigned int> entry_of_block;
-    /// The matrix in compressed rows on the local coefficients (ghosts
-    /// included; their rows are added to the owners in a product).
-    std::vector<unsigned int> row_offsets;
-    std::vector<unsigned int> columns;
-    std::vector<double>       entries;
-    /// One group's dense block while its points are summed (reused).
-    std::vector<double> group_block;
-    /// Global index of every local coefficient, for the node blocks.
-    std::vector<types::global_dof_index> global_of_local;
-    /// With n > 1 functions per node: entry i of vector q is M_ij with j
-    /// the function q of i's node; empty otherwise.
-    std::vector<VectorType> node_block_entries;
+    /// The first point of each group; the last entry is the number of
+    /// points.
+    std::vector<unsigned int> group_first_point;
+    /// The matrix, on the locally owned rows.
+    std::unique_ptr<TrilinosWrappers::SparseMatrix> matrix;
+    /// The matrix with a one on the diagonal of the rows of functions that
+    /// no point reaches, from which matrix_preconditioner is built.
+    std::unique_ptr<TrilinosWrappers::SparseMatrix> regularized_matrix;
+    /// The preconditioner built from the matrix, if it needs one.
+    std::unique_ptr<TrilinosWrappers::PreconditionBase> matrix_preconditioner;
+    /// With several functions per node and the diagonal preconditioner:
+    /// for every locally owned function i, the row of i's node block,
+    /// M_ij for the n functions j of i's node.
+    std::vector<double> node_blocks;
+    /// 1 / lumped mass (1 where it vanishes), the diagonal preconditioner
+    /// with one function per node.
+    DiagonalMatrix<VectorType> inverse_lumped_mass;
   };
 } // namespace MpmOtm
 
