@@ -5,6 +5,7 @@
 #include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_sparsity_pattern.h>
+#include <deal.II/lac/trilinos_vector.h>
 
 #include <mpm_otm/base/plugins.h>
 #include <mpm_otm/grid_system/consistent_mass_matrix.h>
@@ -303,8 +304,8 @@ namespace MpmOtm
       "matrices, as those of max-ent functions with a large 'Max-ent "
       "support factor' (2D, d_max = 3), on any number of ranks. direct per "
       "rank: a sparse direct factorisation of each rank's rows (Trilinos "
-      "Ifpack with Amesos), an exact solve on one rank but only block "
-      "Jacobi between ranks.");
+      "Ifpack with Amesos), set up every step: on one rank CG then needs "
+      "few iterations, between ranks it is only block Jacobi.");
   }
 
 
@@ -385,19 +386,18 @@ namespace MpmOtm
       preconditioner_type != Preconditioner::diagonal ||
       system.functions_per_node() > 1;
     use_matrix = preconditioner_needs_matrix || counts[0] < counts[1];
+    const bool pattern_changed = use_matrix && (!has_pattern || counts[2] > 0.);
+    if (pattern_changed)
+      build_sparsity(system);
     if (use_matrix)
-      {
-        if (!has_pattern || counts[2] > 0.)
-          build_sparsity(system);
-        assemble_matrix(system, shape_data);
-      }
+      assemble_matrix(system, shape_data);
     else
       has_pattern = false;
 
     matrix_preconditioner.reset();
     node_blocks.clear();
     if (preconditioner_type != Preconditioner::diagonal)
-      initialize_matrix_preconditioner(system);
+      initialize_matrix_preconditioner(system, pattern_changed);
     else if (system.functions_per_node() > 1)
       extract_node_blocks(system);
     else
@@ -504,6 +504,8 @@ namespace MpmOtm
     const Utilities::MPI::Partitioner &partitioner = system.partitioner();
     const unsigned int                 n = system.functions_per_node();
     const unsigned int n_owned           = partitioner.locally_owned_size();
+    AssertThrow(n_owned % n == 0 && partitioner.local_range().first % n == 0,
+                ExcMessage("The functions of a node must have one owner."));
     node_blocks.resize(std::size_t(n_owned) * n);
     for (unsigned int i = 0; i < n_owned; ++i)
       {
@@ -520,18 +522,61 @@ namespace MpmOtm
   template <int dim>
   void
   ConsistentMassMatrix<dim>::initialize_matrix_preconditioner(
-    const NodalSystem<dim> &system)
+    const NodalSystem<dim> &system,
+    const bool              pattern_changed)
   {
-    // The rows of functions that no point reaches are empty; a one on their
-    // diagonal makes the matrix the preconditioners factorise regular.
-    if (!regularized_matrix)
-      regularized_matrix = std::make_unique<TrilinosWrappers::SparseMatrix>();
-    regularized_matrix->copy_from(*matrix);
-    for (const types::global_dof_index row :
-         system.partitioner().locally_owned_range())
-      if (matrix->diag_element(row) == 0.)
-        regularized_matrix->set(row, row, 1.);
-    regularized_matrix->compress(VectorOperation::insert);
+    // The preconditioners factorise the matrix with the identity in the
+    // rows and columns of the functions every solve prescribes: those
+    // without material (lumped mass not positive, whose rows may be empty)
+    // and the deactivated ones. For the others they then see M_ff.
+    const Utilities::MPI::Partitioner &partitioner = system.partitioner();
+    const IndexSet &owned        = partitioner.locally_owned_range();
+    const MPI_Comm  communicator = system.lumped_mass.get_mpi_communicator();
+    if (!preconditioner_matrix)
+      preconditioner_matrix =
+        std::make_unique<TrilinosWrappers::SparseMatrix>();
+    if (pattern_changed)
+      {
+        // Every rank takes the same path in copy_from() below only if the
+        // layouts are equal.
+        preconditioner_matrix->reinit(*matrix);
+        const Epetra_Map &column_map = matrix->trilinos_matrix().ColMap();
+        IndexSet          columns(matrix->n());
+        for (int c = 0; c < column_map.NumMyElements(); ++c)
+          columns.add_index(column_map.GID(c));
+        columns.compress();
+        excluded_columns =
+          std::make_unique<TrilinosWrappers::MPI::Vector>(owned,
+                                                          columns,
+                                                          communicator);
+      }
+    preconditioner_matrix->copy_from(*matrix);
+
+    TrilinosWrappers::MPI::Vector excluded_owned(owned, communicator);
+    for (unsigned int i = 0; i < partitioner.locally_owned_size(); ++i)
+      if (!(system.lumped_mass.local_element(i) > 0.))
+        excluded_owned[partitioner.local_to_global(i)] = 1.;
+    for (const unsigned int i : system.deactivated_functions())
+      excluded_owned[partitioner.local_to_global(i)] = 1.;
+    excluded_owned.compress(VectorOperation::insert);
+    *excluded_columns = excluded_owned;
+
+    const Epetra_CrsMatrix &entries = preconditioner_matrix->trilinos_matrix();
+    for (int row = 0; row < entries.NumMyRows(); ++row)
+      {
+        const types::global_dof_index global_row = entries.GRID(row);
+        const bool row_excluded = (*excluded_columns)(global_row) != 0.;
+        int        n_entries;
+        double    *values;
+        int       *columns;
+        entries.ExtractMyRowView(row, n_entries, values, columns);
+        for (int e = 0; e < n_entries; ++e)
+          {
+            const types::global_dof_index column = entries.GCID(columns[e]);
+            if (row_excluded || (*excluded_columns)(column) != 0.)
+              values[e] = (column == global_row) ? 1. : 0.;
+          }
+      }
 
     std::string failure;
     try
@@ -542,7 +587,7 @@ namespace MpmOtm
               {
                 auto direct = std::make_unique<
                   TrilinosWrappers::PreconditionBlockwiseDirect>();
-                direct->initialize(*regularized_matrix);
+                direct->initialize(*preconditioner_matrix);
                 matrix_preconditioner = std::move(direct);
                 break;
               }
@@ -550,7 +595,7 @@ namespace MpmOtm
               {
                 auto multigrid =
                   std::make_unique<TrilinosWrappers::PreconditionAMG>();
-                multigrid->initialize(*regularized_matrix);
+                multigrid->initialize(*preconditioner_matrix);
                 matrix_preconditioner = std::move(multigrid);
                 break;
               }
@@ -713,9 +758,13 @@ namespace MpmOtm
                    "known: a shape function supported by almost no material "
                    "(thesis Ch. 5), and shape functions whose supports overlap "
                    "widely, as max-ent functions with a large 'Max-ent "
-                   "support factor' in 2D and 3D. Use 'set Mass matrix "
-                   "preconditioner = algebraic multigrid', 'set Mass matrix = "
-                   "lumped', or a smaller 'Max-ent support factor'.";
+                   "support factor' in 2D and 3D. Use "
+                << (preconditioner_type == Preconditioner::diagonal ?
+                      "'set Mass matrix preconditioner = algebraic "
+                      "multigrid', " :
+                      "")
+                << "'set Mass matrix = lumped', or a smaller 'Max-ent "
+                   "support factor'.";
         AssertThrow(false, ExcMessage(message.str()));
       }
     set_values(solution);

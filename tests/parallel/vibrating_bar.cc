@@ -139,9 +139,9 @@ end
   compare<3>("3D max-ent", common + bar_3d + max_ent);
   // The other preconditioners of the consistent mass matrix: algebraic
   // multigrid with wide max-ent functions, which make the matrix
-  // ill-conditioned, and a direct solve of each rank's rows. (With d_max = 3
-  // the direct solve is exact on one rank but only block Jacobi on two, and
-  // the runs differ by the CG tolerance times the condition number, 5e-10.)
+  // ill-conditioned, and a direct factorisation of each rank's rows. (With
+  // d_max = 3 the latter is only block Jacobi between two ranks, and 1 and 2
+  // ranks differ by the CG tolerance times the condition number, 5e-10.)
   compare<2>("2D max-ent d_max = 3, multigrid",
              common + bar_2d + max_ent +
                "set Max-ent support factor = 3\n"

@@ -13,6 +13,10 @@ namespace dealii::TrilinosWrappers
 {
   class PreconditionBase;
   class SparseMatrix;
+  namespace MPI
+  {
+    class Vector;
+  }
 } // namespace dealii::TrilinosWrappers
 
 namespace MpmOtm
@@ -37,9 +41,10 @@ namespace MpmOtm
    * has no such fallback, and the deactivation remedy of thesis Sect. 5.2
    * leaves singular blocks); or algebraic multigrid (Trilinos ML) or a
    * sparse direct factorisation of each rank's rows (Ifpack with Amesos),
-   * set up once per step from the whole matrix and applied to the
-   * coefficients that are not prescribed. A solve that does not converge
-   * stops the run.
+   * set up once per step from the matrix with the identity in the rows and
+   * columns of the functions every solve prescribes (no material,
+   * deactivated), and applied to the coefficients that are not prescribed.
+   * A solve that does not converge stops the run.
    */
   template <int dim>
   class ConsistentMassMatrix : public MassMatrix<dim>
@@ -135,10 +140,12 @@ namespace MpmOtm
 
     /**
      * Set up the algebraic multigrid or direct preconditioner of the
-     * matrix. Collective; every rank stops if the set-up fails on one.
+     * matrix, after build_sparsity() if @p pattern_changed. Collective;
+     * every rank stops if the set-up fails on one.
      */
     void
-    initialize_matrix_preconditioner(const NodalSystem<dim> &system);
+    initialize_matrix_preconditioner(const NodalSystem<dim> &system,
+                                     const bool              pattern_changed);
 
     Preconditioner preconditioner_type = Preconditioner::diagonal;
     /// Whether the products use the assembled matrix (or a point pass).
@@ -154,9 +161,12 @@ namespace MpmOtm
     std::vector<unsigned int> group_first_point;
     /// The matrix, on the locally owned rows.
     std::unique_ptr<TrilinosWrappers::SparseMatrix> matrix;
-    /// The matrix with a one on the diagonal of the rows of functions that
-    /// no point reaches, from which matrix_preconditioner is built.
-    std::unique_ptr<TrilinosWrappers::SparseMatrix> regularized_matrix;
+    /// The matrix with the identity in the rows and columns of the
+    /// functions that every solve prescribes, from which
+    /// matrix_preconditioner is built.
+    std::unique_ptr<TrilinosWrappers::SparseMatrix> preconditioner_matrix;
+    /// 1 for those functions, on the matrix's columns.
+    std::unique_ptr<TrilinosWrappers::MPI::Vector> excluded_columns;
     /// The preconditioner built from the matrix, if it needs one.
     std::unique_ptr<TrilinosWrappers::PreconditionBase> matrix_preconditioner;
     /// With several functions per node and the diagonal preconditioner:
