@@ -7,12 +7,12 @@
 // tetrahedra (MPM) and 1D
 // intervals (MPM, OTM, the unified approach with moving B-spline knots), and
 // with max-ent functions, whose supports reach beyond the ghost cells
-// (MPM and OTM on quadrilaterals, MPM on triangles and hexahedra, OTM in
-// 1D; wide ones with the consistent mass matrix preconditioned by algebraic
-// multigrid and by a direct solve per rank). Each
-// runs once on MPI_COMM_WORLD (2 ranks) and once on rank 0 alone; the error
-// norms against the exact solution and the energies agree to round-off, and the
-// errors are small.
+// (MPM, OTM and the unified approach on quadrilaterals, MPM on triangles,
+// hexahedra and tetrahedra, OTM in 1D; wide ones with the consistent mass
+// matrix preconditioned by algebraic multigrid and by a direct solve per rank).
+// Each runs once on MPI_COMM_WORLD (2 ranks) and once on rank 0 alone; the
+// error norms against the exact solution and the energies agree to round-off,
+// and the errors are small.
 
 #include "../tests.h"
 
@@ -137,6 +137,9 @@ end
   compare<2>("2D max-ent OTM", common + bar_2d + max_ent + otm);
   compare<2>("2D simplex max-ent", common + bar_2d + simplices + max_ent);
   compare<3>("3D max-ent", common + bar_3d + max_ent);
+  compare<3>("3D simplex max-ent", common + bar_3d + simplices + max_ent);
+  compare<2>("2D max-ent Unified",
+             common + bar_2d + max_ent + "set Method = Unified\n");
   // The other preconditioners of the consistent mass matrix: algebraic
   // multigrid with wide max-ent functions, which make the matrix
   // ill-conditioned, and a direct factorisation of each rank's rows. (With
