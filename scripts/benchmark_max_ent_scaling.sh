@@ -10,7 +10,7 @@
 # Usage: scripts/benchmark_max_ent_scaling.sh [path to mpm-otm] [repeats]
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
-exe=${1:-$root/build-release/mpm-otm}
+exe=$(realpath "${1:-$root/build-release/mpm-otm}")
 repeats=${2:-3}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT

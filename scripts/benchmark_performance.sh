@@ -11,7 +11,7 @@
 # 'set Shape functions = B-spline' for quadratic B-splines.
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
-exe=${1:-$root/build-release/mpm-otm}
+exe=$(realpath "${1:-$root/build-release/mpm-otm}")
 extra=${2:-}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT

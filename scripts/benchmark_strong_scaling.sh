@@ -12,7 +12,7 @@
 # (ROWS: a grep pattern that selects rows by label, e.g. 'max-ent').
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
-exe=${1:-$root/build-release/mpm-otm}
+exe=$(realpath "${1:-$root/build-release/mpm-otm}")
 repeat=${2:-2}
 rows=${3:-.}
 work=$(mktemp -d)
