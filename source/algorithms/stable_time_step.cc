@@ -163,28 +163,28 @@ namespace MpmOtm
       }
     for (unsigned int c = 0; c < dim; ++c)
       stiffness_product[c] = 0.;
-    unsigned int k = 0;
+    typename ParticleShapeData<dim>::Cursor functions(data);
     for (const auto &particle : material_points.particle_handler())
       {
         const auto     properties = particle.get_properties();
+        const auto     point      = functions.next();
         Tensor<2, dim> gradient;
-        for (unsigned int e = data.offsets[k]; e < data.offsets[k + 1]; ++e)
+        for (unsigned int j = 0; j < point.n; ++j)
           for (unsigned int c = 0; c < dim; ++c)
             gradient[c] +=
-              x[c].local_element(data.indices[e]) * data.gradients[e];
+              x[c].local_element(point.indices[j]) * point.gradients[j];
         const unsigned int            id = Layout::get_material_id(properties);
         const SymmetricTensor<2, dim> strain = symmetrize(gradient);
         const SymmetricTensor<2, dim> stress =
           Layout::volume(properties) *
           (lambda[id] * trace(strain) * unit_symmetric_tensor<dim>() +
            2. * mu[id] * strain);
-        for (unsigned int e = data.offsets[k]; e < data.offsets[k + 1]; ++e)
+        for (unsigned int j = 0; j < point.n; ++j)
           {
-            const Tensor<1, dim> force = stress * data.gradients[e];
+            const Tensor<1, dim> force = stress * point.gradients[j];
             for (unsigned int c = 0; c < dim; ++c)
-              stiffness_product[c].local_element(data.indices[e]) += force[c];
+              stiffness_product[c].local_element(point.indices[j]) += force[c];
           }
-        ++k;
       }
     for (unsigned int c = 0; c < dim; ++c)
       stiffness_product[c].compress(VectorOperation::add);

@@ -137,15 +137,15 @@ namespace MpmOtm
     const double *a[dim];
     for (unsigned int c = 0; c < dim; ++c)
       a[c] = system.acceleration[c].get_values();
-    unsigned int k = 0;
+    typename ParticleShapeData<dim>::Cursor functions(data);
     for (auto &particle : material_points.particle_handler())
       {
         const auto properties = particle.get_properties();
-        for (unsigned int e = data.offsets[k]; e < data.offsets[k + 1]; ++e)
+        const auto point      = functions.next();
+        for (unsigned int j = 0; j < point.n; ++j)
           for (unsigned int c = 0; c < dim; ++c)
             properties[Layout::velocity + c] +=
-              dt * data.values[e] * a[c][data.indices[e]];
-        ++k;
+              dt * point.values[j] * a[c][point.indices[j]];
       }
   }
 
@@ -174,7 +174,7 @@ namespace MpmOtm
 
     types::particle_index bad_point = numbers::invalid_unsigned_int;
     Point<dim>            bad_location;
-    unsigned int          k = 0;
+    typename ParticleShapeData<dim>::Cursor functions(data);
     for (auto &particle : material_points.particle_handler())
       {
         const auto     properties = particle.get_properties();
@@ -185,18 +185,19 @@ namespace MpmOtm
         Tensor<1, dim> advanced_velocity;
         if (velocity_from_acceleration)
           advanced_velocity = Layout::get_vector(properties, Layout::velocity);
-        for (unsigned int e = data.offsets[k]; e < data.offsets[k + 1]; ++e)
+        const auto point = functions.next();
+        for (unsigned int j = 0; j < point.n; ++j)
           {
-            const unsigned int    i    = data.indices[e];
-            const Tensor<1, dim> &grad = data.gradients[e];
+            const unsigned int    i    = point.indices[j];
+            const Tensor<1, dim> &grad = point.gradients[j];
             for (unsigned int c = 0; c < dim; ++c)
               {
-                point_velocity[c] += data.values[e] * v[c][i];
+                point_velocity[c] += point.values[j] * v[c][i];
                 velocity_gradient[c] += v[c][i] * grad;
               }
             if (velocity_from_acceleration)
               for (unsigned int c = 0; c < dim; ++c)
-                advanced_velocity[c] += dt * data.values[e] * a[c][i];
+                advanced_velocity[c] += dt * point.values[j] * a[c][i];
           }
         if (velocity_from_acceleration)
           Layout::set_vector(properties, Layout::velocity, advanced_velocity);
@@ -227,7 +228,6 @@ namespace MpmOtm
             bad_point    = particle.get_id();
             bad_location = location;
           }
-        ++k;
       }
 
     std::string problem;

@@ -427,9 +427,10 @@ namespace MpmOtm
                   gap + partitioner->locally_owned_size() +
                     partitioner->n_ghost_indices(),
                   std::numeric_limits<double>::max());
-        unsigned int k = 0;
+        typename ParticleShapeData<dim>::Cursor functions(data);
         for (const auto &particle : material_points.particle_handler())
           {
+            const auto   point = functions.next();
             const double half_size =
               0.5 *
               std::pow(PropertyLayout<dim>::volume(particle.get_properties()),
@@ -437,11 +438,10 @@ namespace MpmOtm
             const double point_gap =
               condition.wall_offset -
               condition.normal * particle.get_location() - half_size;
-            for (unsigned int e = data.offsets[k]; e < data.offsets[k + 1]; ++e)
-              if (data.values[e] != 0.)
-                gap[data.indices[e]] =
-                  std::min(gap[data.indices[e]], point_gap);
-            ++k;
+            for (unsigned int j = 0; j < point.n; ++j)
+              if (point.values[j] != 0.)
+                gap[point.indices[j]] =
+                  std::min(gap[point.indices[j]], point_gap);
           }
         condition.gap.compress(VectorOperation::min);
       }

@@ -72,20 +72,16 @@ namespace MpmOtm
           src,
           excluded,
           [&](const double *x, double *y) {
+            typename ParticleShapeData<dim>::Cursor functions(shape_data);
             for (unsigned int k = 0; k < particle_mass.size(); ++k)
               {
-                double interpolated = 0.;
-                for (unsigned int e = shape_data.offsets[k];
-                     e < shape_data.offsets[k + 1];
-                     ++e)
-                  interpolated +=
-                    shape_data.values[e] * x[shape_data.indices[e]];
+                const auto point        = functions.next();
+                double     interpolated = 0.;
+                for (unsigned int j = 0; j < point.n; ++j)
+                  interpolated += point.values[j] * x[point.indices[j]];
                 interpolated *= particle_mass[k];
-                for (unsigned int e = shape_data.offsets[k];
-                     e < shape_data.offsets[k + 1];
-                     ++e)
-                  y[shape_data.indices[e]] +=
-                    shape_data.values[e] * interpolated;
+                for (unsigned int j = 0; j < point.n; ++j)
+                  y[point.indices[j]] += point.values[j] * interpolated;
               }
           });
       }
@@ -219,19 +215,18 @@ namespace MpmOtm
     group_indices.clear();
     group_first_point.clear();
     unsigned int group_start = 0;
-    for (unsigned int k = 0; k < shape_data.n_particles(); ++k)
+    for (unsigned int b = 0; b < shape_data.n_batches(); ++b)
       {
-        const unsigned int begin = shape_data.offsets[k];
-        const unsigned int n     = shape_data.offsets[k + 1] - begin;
+        const unsigned int n = shape_data.n_functions(b);
         Assert(n > 0, ExcMessage("A point without shape functions."));
-        const unsigned int *indices = &shape_data.indices[begin];
+        const unsigned int *indices = shape_data.function_indices(b);
         const bool          same =
-          k > 0 && group_indices.size() - group_start == n &&
+          b > 0 && group_indices.size() - group_start == n &&
           std::equal(indices, indices + n, group_indices.begin() + group_start);
         if (!same)
           {
             group_start = group_indices.size();
-            group_first_point.push_back(k);
+            group_first_point.push_back(shape_data.first_particle(b));
             group_indices.insert(group_indices.end(), indices, indices + n);
             group_offsets.push_back(group_indices.size());
           }
@@ -257,7 +252,7 @@ namespace MpmOtm
     for (unsigned int g = 0; g + 1 < group_offsets.size(); ++g)
       local_counts[0] += Utilities::fixed_power<2>(
         double(group_offsets[g + 1] - group_offsets[g]));
-    local_counts[1] = 2. * shape_data.indices.size();
+    local_counts[1] = 2. * shape_data.values.size();
     local_counts[2] = groups_changed ? 1. : 0.;
     std::vector<double> counts(3);
     Utilities::MPI::sum(local_counts,
@@ -343,8 +338,9 @@ namespace MpmOtm
     // Sum m_p phi_a phi_b over the points of each group into a dense block,
     // its upper triangle, then add the block to the matrix.
     *matrix = 0.;
-    std::vector<double>                  block;
-    std::vector<types::global_dof_index> global;
+    std::vector<double>                     block;
+    std::vector<types::global_dof_index>    global;
+    typename ParticleShapeData<dim>::Cursor functions(shape_data);
     for (unsigned int g = 0; g + 1 < group_offsets.size(); ++g)
       {
         const unsigned int n = group_offsets[g + 1] - group_offsets[g];
@@ -354,7 +350,7 @@ namespace MpmOtm
              ++k)
           {
             const double  m   = system.particle_mass[k];
-            const double *phi = &shape_data.values[shape_data.offsets[k]];
+            const double *phi = functions.next().values;
             for (unsigned int a = 0; a < n; ++a)
               {
                 const double m_phi = m * phi[a];

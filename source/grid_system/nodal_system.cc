@@ -111,7 +111,8 @@ namespace MpmOtm
         f[c] = force[c].get_values();
       }
 
-    unsigned int k = 0;
+    typename ParticleShapeData<dim>::Cursor functions(shape_data);
+    unsigned int                            k = 0;
     for (const auto &particle : material_points.particle_handler())
       {
         const auto           properties = particle.get_properties();
@@ -137,14 +138,12 @@ namespace MpmOtm
         if (m > 0.)
           external_force_squared_by_mass += external.norm_square() / m;
 
-        for (unsigned int e = shape_data.offsets[k];
-             e < shape_data.offsets[k + 1];
-             ++e)
+        const auto point = functions.next();
+        for (unsigned int j = 0; j < point.n; ++j)
           {
-            const unsigned int    i          = shape_data.indices[e];
-            const double          phi        = shape_data.values[e];
-            const Tensor<1, dim> &grad       = shape_data.gradients[e];
-            const Tensor<1, dim>  sigma_grad = sigma * grad;
+            const unsigned int   i          = point.indices[j];
+            const double         phi        = point.values[j];
+            const Tensor<1, dim> sigma_grad = sigma * point.gradients[j];
             mass[i] += phi * m;
             for (unsigned int c = 0; c < dim; ++c)
               {
@@ -160,12 +159,14 @@ namespace MpmOtm
       {
         diagonal_mass          = 0.;
         double *const diagonal = diagonal_mass.get_values();
+        typename ParticleShapeData<dim>::Cursor diagonal_functions(shape_data);
         for (k = 0; k < shape_data.n_particles(); ++k)
-          for (unsigned int e = shape_data.offsets[k];
-               e < shape_data.offsets[k + 1];
-               ++e)
-            diagonal[shape_data.indices[e]] +=
-              particle_mass[k] * shape_data.values[e] * shape_data.values[e];
+          {
+            const auto point = diagonal_functions.next();
+            for (unsigned int j = 0; j < point.n; ++j)
+              diagonal[point.indices[j]] +=
+                particle_mass[k] * point.values[j] * point.values[j];
+          }
       }
     if (track_material_boundary)
       find_material_boundary(material_points);
@@ -267,19 +268,17 @@ namespace MpmOtm
         momentum[c] = 0.;
         q[c]        = momentum[c].get_values();
       }
-    unsigned int k = 0;
+    typename ParticleShapeData<dim>::Cursor functions(shape_data);
     for (const auto &particle : material_points.particle_handler())
       {
         const auto           properties = particle.get_properties();
         const double         m          = properties[Layout::mass];
         const Tensor<1, dim> v =
           Layout::get_vector(properties, Layout::velocity);
-        for (unsigned int e = shape_data.offsets[k];
-             e < shape_data.offsets[k + 1];
-             ++e)
+        const auto point = functions.next();
+        for (unsigned int j = 0; j < point.n; ++j)
           for (unsigned int c = 0; c < dim; ++c)
-            q[c][shape_data.indices[e]] += shape_data.values[e] * m * v[c];
-        ++k;
+            q[c][point.indices[j]] += point.values[j] * m * v[c];
       }
     for (unsigned int c = 0; c < dim; ++c)
       momentum[c].compress(VectorOperation::add);

@@ -504,16 +504,12 @@ namespace MpmOtm
     const unsigned int n_local     = Utilities::fixed_power<dim>(p + 1);
     const unsigned int n_particles = particles.n_locally_owned_particles();
 
-    data.offsets.resize(n_particles + 1);
-    data.indices.resize(n_particles * n_local);
-    data.values.resize(n_particles * n_local);
-    data.gradients.resize(n_particles * n_local);
+    data.reinit(n_particles);
 
     std::vector<types::global_dof_index>              global_indices(n_local);
     std::vector<unsigned int>                         local_indices(n_local);
     typename Triangulation<dim>::active_cell_iterator current_cell;
 
-    unsigned int k = 0;
     for (const auto &particle : particles)
       {
         const auto cell = particle.get_surrounding_cell();
@@ -523,20 +519,15 @@ namespace MpmOtm
             functions_on_cell(cell, global_indices);
             for (unsigned int i = 0; i < n_local; ++i)
               local_indices[i] = partitioner.global_to_local(global_indices[i]);
+            data.start_batch(local_indices.data(), n_local);
           }
-        const unsigned int offset = k * n_local;
-        data.offsets[k]           = offset;
+        const std::size_t offset = data.add_particle();
         cell_values(cell,
                     particle.get_reference_location(),
                     &data.values[offset],
                     &data.gradients[offset]);
-        std::copy(local_indices.begin(),
-                  local_indices.end(),
-                  data.indices.begin() + offset);
-        ++k;
       }
-    data.offsets[n_particles] = n_particles * n_local;
-    Assert(k == n_particles, ExcInternalError());
+    data.finish();
   }
 
 

@@ -205,10 +205,7 @@ namespace MpmOtm
     const unsigned int n_functions = fe->n_dofs_per_cell();
     const unsigned int n_particles = particles.n_locally_owned_particles();
 
-    data.offsets.resize(n_particles + 1);
-    data.indices.resize(n_particles * n_functions);
-    data.values.resize(n_particles * n_functions);
-    data.gradients.resize(n_particles * n_functions);
+    data.reinit(n_particles);
 
     std::vector<types::global_dof_index> dof_indices(n_functions);
     std::vector<unsigned int>            local_indices(n_functions);
@@ -221,7 +218,6 @@ namespace MpmOtm
     bool           affine = false;
     Tensor<2, dim> inverse_transpose;
 
-    unsigned int k = 0;
     for (const auto &particle : particles)
       {
         const auto cell = particle.get_surrounding_cell();
@@ -252,12 +248,12 @@ namespace MpmOtm
                   }
                 inverse_transpose = transpose(invert(jacobian));
               }
+            data.start_batch(local_indices.data(), n_functions);
           }
 
-        const unsigned int offset = k * n_functions;
-        data.offsets[k]           = offset;
-        double         *values    = &data.values[offset];
-        Tensor<1, dim> *gradients = &data.gradients[offset];
+        const std::size_t offset    = data.add_particle();
+        double           *values    = &data.values[offset];
+        Tensor<1, dim>   *gradients = &data.gradients[offset];
         reference_values(simplex,
                          particle.get_reference_location(),
                          values,
@@ -274,14 +270,9 @@ namespace MpmOtm
             inverse_transpose = transpose(invert(jacobian));
           }
         for (unsigned int i = 0; i < n_functions; ++i)
-          {
-            data.indices[offset + i] = local_indices[i];
-            gradients[i] = inverse_transpose * reference_gradients[i];
-          }
-        ++k;
+          gradients[i] = inverse_transpose * reference_gradients[i];
       }
-    data.offsets[n_particles] = n_particles * n_functions;
-    Assert(k == n_particles, ExcInternalError());
+    data.finish();
   }
 
 

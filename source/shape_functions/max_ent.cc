@@ -447,20 +447,17 @@ namespace MpmOtm
            ExcInternalError());
     (void)partitioner;
     const auto &particles = material_points.particle_handler();
-    data.offsets.resize(particles.n_locally_owned_particles() + 1);
-    data.indices.clear();
-    data.values.clear();
-    data.gradients.clear();
+    data.reinit(particles.n_locally_owned_particles());
     previous_lambda = Tensor<1, dim>();
 
     // A point inside its cell's bounding box gets the cell's candidates, so
-    // that the points of a cell share their list of functions (the mass
-    // matrix sums them as one block); a point outside it (OTM: the nodes
-    // move with the material, but not as the cell's linear map) gets the
-    // candidates from the search tree.
+    // that the points of a cell share their list of functions (one batch,
+    // which the mass matrix sums as one block); a point outside it (OTM: the
+    // nodes move with the material, but not as the cell's linear map) gets
+    // the candidates from the search tree, in a batch of its own.
     typename Triangulation<dim>::active_cell_iterator current_cell;
-    unsigned int                                      cell = 0;
-    unsigned int                                      k    = 0;
+    unsigned int                                      cell        = 0;
+    const unsigned int                               *batch_nodes = nullptr;
     for (const auto &particle : particles)
       {
         if (particle.get_surrounding_cell() != current_cell)
@@ -485,12 +482,14 @@ namespace MpmOtm
             candidate_nodes = candidates.data();
             n_candidates    = candidates.size();
           }
+        if (candidate_nodes != batch_nodes ||
+            candidate_nodes == candidates.data())
+          {
+            data.start_batch(candidate_nodes, n_candidates);
+            batch_nodes = candidate_nodes;
+          }
 
-        const unsigned int offset = data.indices.size();
-        data.offsets[k]           = offset;
-        data.indices.resize(offset + n_candidates);
-        data.values.resize(offset + n_candidates);
-        data.gradients.resize(offset + n_candidates);
+        const std::size_t offset  = data.add_particle();
         const std::string failure = solve(x,
                                           candidate_nodes,
                                           n_candidates,
@@ -501,12 +500,8 @@ namespace MpmOtm
                     ExcMessage("At material point " +
                                std::to_string(particle.get_id()) + ": " +
                                failure));
-        std::copy(candidate_nodes,
-                  candidate_nodes + n_candidates,
-                  data.indices.begin() + offset);
-        ++k;
       }
-    data.offsets[k] = data.indices.size();
+    data.finish();
   }
 
 

@@ -137,14 +137,10 @@ namespace MpmOtm
     const auto        &particles   = material_points.particle_handler();
     const unsigned int n_particles = particles.n_locally_owned_particles();
 
-    data.offsets.resize(n_particles + 1);
-    data.indices.resize(n_particles * n_cell_functions);
-    data.values.resize(n_particles * n_cell_functions);
-    data.gradients.resize(n_particles * n_cell_functions);
+    data.reinit(n_particles);
 
     std::array<unsigned int, n_cell_functions>        local_indices;
     typename Triangulation<dim>::active_cell_iterator current_cell;
-    unsigned int                                      k = 0;
     for (const auto &particle : particles)
       {
         const auto cell = particle.get_surrounding_cell();
@@ -154,21 +150,16 @@ namespace MpmOtm
             const auto &functions = cell_functions(cell);
             for (unsigned int i = 0; i < n_cell_functions; ++i)
               local_indices[i] = partitioner.global_to_local(functions[i]);
+            data.start_batch(local_indices.data(), n_cell_functions);
           }
-        const unsigned int offset = k * n_cell_functions;
-        data.offsets[k]           = offset;
+        const std::size_t offset = data.add_particle();
         if constexpr (dim == 2)
           splines->cell_values(cell,
                                particle.get_reference_location(),
                                &data.values[offset],
                                &data.gradients[offset]);
-        std::copy(local_indices.begin(),
-                  local_indices.end(),
-                  data.indices.begin() + offset);
-        ++k;
       }
-    data.offsets[n_particles] = n_particles * n_cell_functions;
-    Assert(k == n_particles, ExcInternalError());
+    data.finish();
   }
 
 

@@ -142,22 +142,22 @@ end
 
   ParticleShapeData<dim> data;
   shape_functions.evaluate(points, partitioner, data);
-  double       max_error = 0;
-  unsigned int k         = 0;
+  double                                  max_error = 0;
+  typename ParticleShapeData<dim>::Cursor cursor(data);
   for (const auto &particle : points.particle_handler())
     {
       double         value = 0;
       Tensor<1, dim> gradient;
-      for (unsigned int e = data.offsets[k]; e < data.offsets[k + 1]; ++e)
+      const auto     point = cursor.next();
+      for (unsigned int e = 0; e < point.n; ++e)
         {
-          value += data.values[e] * nodal[data.indices[e]];
-          gradient += data.gradients[e] * nodal[data.indices[e]];
+          value += point.values[e] * nodal[point.indices[e]];
+          gradient += point.gradients[e] * nodal[point.indices[e]];
         }
       max_error =
         std::max(max_error,
                  std::abs(value - 1. - slope * particle.get_location()) +
                    (gradient - slope).norm());
-      ++k;
     }
   check(max_error < 1e-12,
         "linear function not reproduced: error " + std::to_string(max_error));

@@ -180,6 +180,7 @@ namespace
         functions.evaluate(simulator->material_points(), partitioner, data);
         double       difference = 0, padded = 0;
         unsigned int k = 0, n_entries = 0, missing = 0;
+        typename ParticleShapeData<dim>::Cursor cursor(data);
         for (const auto &particle : particles)
           {
             const std::string failure =
@@ -188,23 +189,24 @@ namespace
                                     values,
                                     gradients);
             check(failure.empty(), failure);
-            for (unsigned int e = data.offsets[k]; e < data.offsets[k + 1]; ++e)
+            const auto point = cursor.next();
+            for (unsigned int e = 0; e < point.n; ++e)
               {
                 const types::global_dof_index index =
-                  partitioner.local_to_global(data.indices[e]);
+                  partitioner.local_to_global(point.indices[e]);
                 const auto found =
                   std::find(indices.begin(), indices.end(), index);
                 if (found == indices.end())
                   padded = std::max({padded,
-                                     std::abs(data.values[e]),
-                                     data.gradients[e].norm()});
+                                     std::abs(point.values[e]),
+                                     point.gradients[e].norm()});
                 else
                   {
                     const unsigned int j = found - indices.begin();
                     difference           = std::max(
                       {difference,
-                                 std::abs(data.values[e] - values[j]),
-                                 (data.gradients[e] - gradients[j]).norm() / n_cells});
+                                 std::abs(point.values[e] - values[j]),
+                                 (point.gradients[e] - gradients[j]).norm() / n_cells});
                     ++n_entries;
                   }
               }

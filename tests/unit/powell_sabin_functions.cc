@@ -591,15 +591,16 @@ end
                                   cell->vertex_index(j))[q]) -
                                 scale(vertex));
           }
-      unsigned int k = 0;
+      ParticleShapeData<2>::Cursor cursor(data);
       for (const auto &particle : points.particle_handler())
         {
-          double value = 0, unity = 0;
-          for (unsigned int e = data.offsets[k]; e < data.offsets[k + 1]; ++e)
+          double     value = 0, unity = 0;
+          const auto point = cursor.next();
+          for (unsigned int e = 0; e < point.n; ++e)
             {
-              value += data.values[e] *
-                       global[partitioner.local_to_global(data.indices[e])];
-              unity += data.values[e];
+              value += point.values[e] *
+                       global[partitioner.local_to_global(point.indices[e])];
+              unity += point.values[e];
             }
           const Point<2> x = particle.get_location();
           error            = std::max(
@@ -608,7 +609,6 @@ end
                         std::abs(
                value -
                quadratic(g, Point<2>((x[0] - 12.5) / 12.5, x[1] / 2.)).first)});
-          ++k;
         }
     }
   check(error < 1e-12,
