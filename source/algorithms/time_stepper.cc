@@ -174,6 +174,11 @@ namespace MpmOtm
 
     types::particle_index bad_point = numbers::invalid_unsigned_int;
     Point<dim>            bad_location;
+    // The nodal velocities and accelerations of a batch's functions,
+    // gathered once for the points of the batch.
+    std::vector<Tensor<1, dim>>             batch_velocity;
+    std::vector<Tensor<1, dim>>             batch_acceleration;
+    const unsigned int                     *batch_functions = nullptr;
     typename ParticleShapeData<dim>::Cursor functions(data);
     for (auto &particle : material_points.particle_handler())
       {
@@ -186,18 +191,33 @@ namespace MpmOtm
         if (velocity_from_acceleration)
           advanced_velocity = Layout::get_vector(properties, Layout::velocity);
         const auto point = functions.next();
+        if (point.indices != batch_functions)
+          {
+            batch_functions = point.indices;
+            if (batch_velocity.size() < point.n)
+              {
+                batch_velocity.resize(point.n);
+                batch_acceleration.resize(point.n);
+              }
+            for (unsigned int j = 0; j < point.n; ++j)
+              for (unsigned int c = 0; c < dim; ++c)
+                {
+                  batch_velocity[j][c]     = v[c][point.indices[j]];
+                  batch_acceleration[j][c] = a[c][point.indices[j]];
+                }
+          }
         for (unsigned int j = 0; j < point.n; ++j)
           {
-            const unsigned int    i    = point.indices[j];
             const Tensor<1, dim> &grad = point.gradients[j];
             for (unsigned int c = 0; c < dim; ++c)
               {
-                point_velocity[c] += point.values[j] * v[c][i];
-                velocity_gradient[c] += v[c][i] * grad;
+                point_velocity[c] += point.values[j] * batch_velocity[j][c];
+                velocity_gradient[c] += batch_velocity[j][c] * grad;
               }
             if (velocity_from_acceleration)
               for (unsigned int c = 0; c < dim; ++c)
-                advanced_velocity[c] += dt * point.values[j] * a[c][i];
+                advanced_velocity[c] +=
+                  dt * point.values[j] * batch_acceleration[j][c];
           }
         if (velocity_from_acceleration)
           Layout::set_vector(properties, Layout::velocity, advanced_velocity);

@@ -111,6 +111,27 @@ namespace MpmOtm
         f[c] = force[c].get_values();
       }
 
+    // The points of a batch share their functions: their contributions are
+    // summed per function of the batch, and each sum is added to the nodal
+    // vectors once per batch.
+    std::vector<double>         batch_mass;
+    std::vector<Tensor<1, dim>> batch_momentum;
+    std::vector<Tensor<1, dim>> batch_force;
+    const unsigned int         *batch_functions = nullptr;
+    unsigned int                batch_size      = 0;
+    const auto                  add_batch       = [&]() {
+      for (unsigned int j = 0; j < batch_size; ++j)
+        {
+          const unsigned int i = batch_functions[j];
+          mass[i] += batch_mass[j];
+          for (unsigned int c = 0; c < dim; ++c)
+            {
+              q[c][i] += batch_momentum[j][c];
+              f[c][i] += batch_force[j][c];
+            }
+        }
+    };
+
     typename ParticleShapeData<dim>::Cursor functions(shape_data);
     unsigned int                            k = 0;
     for (const auto &particle : material_points.particle_handler())
@@ -139,21 +160,33 @@ namespace MpmOtm
           external_force_squared_by_mass += external.norm_square() / m;
 
         const auto point = functions.next();
+        if (point.indices != batch_functions)
+          {
+            add_batch();
+            batch_functions = point.indices;
+            batch_size      = point.n;
+            if (batch_mass.size() < batch_size)
+              {
+                batch_mass.resize(batch_size);
+                batch_momentum.resize(batch_size);
+                batch_force.resize(batch_size);
+              }
+            std::fill_n(batch_mass.begin(), batch_size, 0.);
+            std::fill_n(batch_momentum.begin(), batch_size, Tensor<1, dim>());
+            std::fill_n(batch_force.begin(), batch_size, Tensor<1, dim>());
+          }
         for (unsigned int j = 0; j < point.n; ++j)
           {
-            const unsigned int   i          = point.indices[j];
-            const double         phi        = point.values[j];
-            const Tensor<1, dim> sigma_grad = sigma * point.gradients[j];
-            mass[i] += phi * m;
-            for (unsigned int c = 0; c < dim; ++c)
-              {
-                q[c][i] += phi * m * v[c];
-                f[c][i] += phi * external[c] - volume * sigma_grad[c];
-              }
+            const double phi = point.values[j];
+            batch_mass[j] += phi * m;
+            batch_momentum[j] += (phi * m) * v;
+            batch_force[j] +=
+              phi * external - volume * (sigma * point.gradients[j]);
           }
         particle_mass[k] = m;
         ++k;
       }
+    add_batch();
 
     if (deactivation_threshold > 0.)
       {

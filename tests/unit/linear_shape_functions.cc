@@ -161,6 +161,22 @@ end
     }
   check(max_error < 1e-12,
         "linear function not reproduced: error " + std::to_string(max_error));
+
+  // One batch per cell with points, holding the cell's functions once.
+  unsigned int occupied_cells = 0;
+  for (const auto &cell : dofs.get_triangulation().active_cell_iterators())
+    if (points.particle_handler().n_particles_in_cell(cell) > 0)
+      ++occupied_cells;
+  check(data.n_batches() == occupied_cells &&
+          data.n_particles() == points.n_global_points(),
+        "expected one batch per cell with points: " +
+          std::to_string(data.n_batches()) + " batches, " +
+          std::to_string(occupied_cells) + " cells with points");
+  for (unsigned int b = 0; b < data.n_batches(); ++b)
+    check(data.n_functions(b) == dofs.get_fe().n_dofs_per_cell() &&
+            data.values.size() ==
+              std::size_t(data.n_particles()) * dofs.get_fe().n_dofs_per_cell(),
+          "a batch without the cell's functions");
   double largest_motion = 0;
   for (const auto &particle : points.particle_handler())
     largest_motion = std::max(largest_motion,
