@@ -504,7 +504,7 @@ namespace MpmOtm
     const unsigned int n_local     = Utilities::fixed_power<dim>(p + 1);
     const unsigned int n_particles = particles.n_locally_owned_particles();
 
-    data.reinit(n_particles);
+    data.reinit(n_particles, n_local);
 
     std::vector<types::global_dof_index>              global_indices(n_local);
     std::vector<unsigned int>                         local_indices(n_local);

@@ -205,7 +205,7 @@ namespace MpmOtm
     const unsigned int n_functions = fe->n_dofs_per_cell();
     const unsigned int n_particles = particles.n_locally_owned_particles();
 
-    data.reinit(n_particles);
+    data.reinit(n_particles, n_functions);
 
     std::vector<types::global_dof_index> dof_indices(n_functions);
     std::vector<unsigned int>            local_indices(n_functions);

@@ -447,7 +447,7 @@ namespace MpmOtm
            ExcInternalError());
     (void)partitioner;
     const auto &particles = material_points.particle_handler();
-    data.reinit(particles.n_locally_owned_particles());
+    data.reinit(particles.n_locally_owned_particles(), 0);
     previous_lambda = Tensor<1, dim>();
 
     // A point inside its cell's bounding box gets the cell's candidates, so

@@ -137,7 +137,7 @@ namespace MpmOtm
     const auto        &particles   = material_points.particle_handler();
     const unsigned int n_particles = particles.n_locally_owned_particles();
 
-    data.reinit(n_particles);
+    data.reinit(n_particles, n_cell_functions);
 
     std::array<unsigned int, n_cell_functions>        local_indices;
     typename Triangulation<dim>::active_cell_iterator current_cell;

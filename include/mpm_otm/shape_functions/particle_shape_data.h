@@ -91,17 +91,27 @@ namespace MpmOtm
     std::vector<Tensor<1, dim>> gradients;
 
     /**
-     * Start over for @p n_particles particles (the memory is kept).
+     * Start over for @p n_particles particles. A family whose points all
+     * have @p n_functions_per_particle functions passes that number, and the
+     * arrays are sized once; with 0 (a varying number) they grow as the
+     * particles are added. The memory is kept from call to call.
      */
     void
-    reinit(const unsigned int n_particles)
+    reinit(const unsigned int n_particles,
+           const unsigned int n_functions_per_particle)
     {
       expected_particles = n_particles;
       added_particles    = 0;
+      n_entries          = 0;
       batches.clear();
       indices.clear();
-      values.clear();
-      gradients.clear();
+      const std::size_t size =
+        std::size_t(n_particles) * n_functions_per_particle;
+      if (values.size() < size)
+        {
+          values.resize(size);
+          gradients.resize(size);
+        }
     }
 
     /**
@@ -124,10 +134,13 @@ namespace MpmOtm
     add_particle()
     {
       Assert(!batches.empty(), ExcMessage("No batch started."));
-      const std::size_t offset = values.size();
-      const std::size_t n      = indices.size() - batches.back().first_index;
-      values.resize(offset + n);
-      gradients.resize(offset + n);
+      const std::size_t offset = n_entries;
+      n_entries += indices.size() - batches.back().first_index;
+      if (values.size() < n_entries)
+        {
+          values.resize(n_entries);
+          gradients.resize(n_entries);
+        }
       ++added_particles;
       return offset;
     }
@@ -139,6 +152,8 @@ namespace MpmOtm
     finish()
     {
       Assert(added_particles == expected_particles, ExcInternalError());
+      values.resize(n_entries);
+      gradients.resize(n_entries);
       batches.push_back(
         Batch{added_particles, static_cast<unsigned int>(indices.size())});
     }
@@ -200,6 +215,7 @@ namespace MpmOtm
     std::vector<Batch> batches;
     /// The list of functions of each batch.
     std::vector<unsigned int> indices;
+    std::size_t               n_entries          = 0;
     unsigned int              added_particles    = 0;
     unsigned int              expected_particles = 0;
   };
