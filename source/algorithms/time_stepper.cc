@@ -22,7 +22,8 @@ namespace MpmOtm
                                 const Problem<dim>         &problem,
                                 BoundaryConditions<dim>    &boundary_conditions,
                                 const LocalDamping<dim>    &damping,
-                                TimerOutput                &timer)
+                                VolumetricLockingRemedy<dim> *locking_remedy,
+                                TimerOutput                  &timer)
     : material_points(material_points)
     , shape_functions(shape_functions)
     , system(system)
@@ -33,6 +34,7 @@ namespace MpmOtm
     , problem(problem)
     , boundary_conditions(boundary_conditions)
     , damping(damping)
+    , locking_remedy(locking_remedy)
     , timer(timer)
   {}
 
@@ -172,59 +174,80 @@ namespace MpmOtm
       particle_velocity ==
       NodalUpdate<dim>::ParticleVelocity::from_displacement;
 
-    types::particle_index bad_point = numbers::invalid_unsigned_int;
-    Point<dim>            bad_location;
-    // The nodal velocities and accelerations of a batch's functions,
-    // gathered once for the points of the batch.
-    std::vector<Tensor<1, dim>>             batch_velocity;
-    std::vector<Tensor<1, dim>>             batch_acceleration;
-    const unsigned int                     *batch_functions = nullptr;
-    typename ParticleShapeData<dim>::Cursor functions(data);
-    for (auto &particle : material_points.particle_handler())
-      {
-        const auto     properties = particle.get_properties();
-        Tensor<1, dim> point_velocity;
-        Tensor<2, dim> velocity_gradient;
-        // The particle's velocity, advanced in the order of
-        // advance_particle_velocities() (the same round-off).
-        Tensor<1, dim> advanced_velocity;
-        if (velocity_from_acceleration)
-          advanced_velocity = Layout::get_vector(properties, Layout::velocity);
-        const auto point = functions.next();
-        if (point.indices != batch_functions)
-          {
-            batch_functions = point.indices;
-            if (batch_velocity.size() < point.n)
-              {
-                batch_velocity.resize(point.n);
-                batch_acceleration.resize(point.n);
-              }
-            for (unsigned int j = 0; j < point.n; ++j)
+    // Pass 1: the velocity of each point and its velocity gradient.
+    const unsigned int n_points = data.n_particles();
+    point_velocities.resize(n_points);
+    velocity_gradients.resize(n_points);
+    {
+      // The nodal velocities and accelerations of a batch's functions,
+      // gathered once for the points of the batch.
+      std::vector<Tensor<1, dim>>             batch_velocity;
+      std::vector<Tensor<1, dim>>             batch_acceleration;
+      const unsigned int                     *batch_functions = nullptr;
+      typename ParticleShapeData<dim>::Cursor functions(data);
+      unsigned int                            p = 0;
+      for (auto &particle : material_points.particle_handler())
+        {
+          const auto     properties = particle.get_properties();
+          Tensor<1, dim> point_velocity;
+          Tensor<2, dim> velocity_gradient;
+          // The particle's velocity, advanced in the order of
+          // advance_particle_velocities() (the same round-off).
+          Tensor<1, dim> advanced_velocity;
+          if (velocity_from_acceleration)
+            advanced_velocity =
+              Layout::get_vector(properties, Layout::velocity);
+          const auto point = functions.next();
+          if (point.indices != batch_functions)
+            {
+              batch_functions = point.indices;
+              if (batch_velocity.size() < point.n)
+                {
+                  batch_velocity.resize(point.n);
+                  batch_acceleration.resize(point.n);
+                }
+              for (unsigned int j = 0; j < point.n; ++j)
+                for (unsigned int c = 0; c < dim; ++c)
+                  {
+                    batch_velocity[j][c]     = v[c][point.indices[j]];
+                    batch_acceleration[j][c] = a[c][point.indices[j]];
+                  }
+            }
+          for (unsigned int j = 0; j < point.n; ++j)
+            {
+              const Tensor<1, dim> &grad = point.gradients[j];
               for (unsigned int c = 0; c < dim; ++c)
                 {
-                  batch_velocity[j][c]     = v[c][point.indices[j]];
-                  batch_acceleration[j][c] = a[c][point.indices[j]];
+                  point_velocity[c] += point.values[j] * batch_velocity[j][c];
+                  velocity_gradient[c] += batch_velocity[j][c] * grad;
                 }
-          }
-        for (unsigned int j = 0; j < point.n; ++j)
-          {
-            const Tensor<1, dim> &grad = point.gradients[j];
-            for (unsigned int c = 0; c < dim; ++c)
-              {
-                point_velocity[c] += point.values[j] * batch_velocity[j][c];
-                velocity_gradient[c] += batch_velocity[j][c] * grad;
-              }
-            if (velocity_from_acceleration)
-              for (unsigned int c = 0; c < dim; ++c)
-                advanced_velocity[c] +=
-                  dt * point.values[j] * batch_acceleration[j][c];
-          }
-        if (velocity_from_acceleration)
-          Layout::set_vector(properties, Layout::velocity, advanced_velocity);
-        else if (velocity_from_displacement)
-          Layout::set_vector(properties, Layout::velocity, point_velocity);
+              if (velocity_from_acceleration)
+                for (unsigned int c = 0; c < dim; ++c)
+                  advanced_velocity[c] +=
+                    dt * point.values[j] * batch_acceleration[j][c];
+            }
+          if (velocity_from_acceleration)
+            Layout::set_vector(properties, Layout::velocity, advanced_velocity);
+          else if (velocity_from_displacement)
+            Layout::set_vector(properties, Layout::velocity, point_velocity);
+          point_velocities[p]   = point_velocity;
+          velocity_gradients[p] = velocity_gradient;
+          ++p;
+        }
+    }
 
-        Tensor<2, dim> F = Layout::get_deformation_gradient(properties);
+    if (locking_remedy)
+      locking_remedy->correct(material_points, data, dt, velocity_gradients);
+
+    // Pass 2: deformation gradient, stress and position.
+    types::particle_index bad_point = numbers::invalid_unsigned_int;
+    Point<dim>            bad_location;
+    unsigned int          p = 0;
+    for (auto &particle : material_points.particle_handler())
+      {
+        const auto            properties        = particle.get_properties();
+        const Tensor<2, dim> &velocity_gradient = velocity_gradients[p];
+        Tensor<2, dim>        F = Layout::get_deformation_gradient(properties);
         F = (unit_symmetric_tensor<dim>() + dt * velocity_gradient) * F;
         Layout::set_deformation_gradient(properties, F);
 
@@ -235,8 +258,9 @@ namespace MpmOtm
         const SymmetricTensor<2, dim> &sigma = state.stress;
 
         const Point<dim> location =
-          particle.get_location() + dt * point_velocity;
+          particle.get_location() + dt * point_velocities[p];
         particle.set_location(location);
+        ++p;
 
         const double check =
           sigma.norm() +
@@ -249,6 +273,9 @@ namespace MpmOtm
             bad_location = location;
           }
       }
+
+    if (locking_remedy)
+      locking_remedy->after_stress_update(material_points);
 
     std::string problem;
     if (bad_point != numbers::invalid_unsigned_int)

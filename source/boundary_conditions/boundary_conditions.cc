@@ -310,34 +310,23 @@ namespace MpmOtm
   void
   BoundaryConditions<dim>::find_box_functions(Condition &condition) const
   {
-    const IndexSet owned = functions->locally_owned_functions();
+    IndexSet owned = functions->locally_owned_functions();
+    owned.compress();
     Point<dim>     lower = condition.box.get_boundary_points().first;
     Point<dim>     upper = condition.box.get_boundary_points().second;
     lower += condition.displacement;
     upper += condition.displacement;
-    const BoundingBox<dim> box(std::make_pair(lower, upper));
+    const BoundingBox<dim>               box(std::make_pair(lower, upper));
+    std::vector<types::global_dof_index> global;
+    AssertThrow(functions->functions_in_box(box, global),
+                ExcMessage("Boundary " + condition.name +
+                           "/Box lower corner: a condition on the nodes in "
+                           "a box needs shape functions that belong to "
+                           "points (linear, max-ent: vertices; B-splines: "
+                           "Greville points); use Boundary ids instead."));
     condition.functions.clear();
-    for (const auto &cell :
-         background_grid->triangulation().active_cell_iterators())
-      if (cell->is_locally_owned())
-        for (const unsigned int v : cell->vertex_indices())
-          if (box.point_inside(cell->vertex(v), 1e-10))
-            {
-              const auto function = functions->vertex_function(cell, v);
-              AssertThrow(function != numbers::invalid_dof_index,
-                          ExcMessage("Boundary " + condition.name +
-                                     "/Box lower corner: a condition on the "
-                                     "grid vertices in a box needs shape "
-                                     "functions that belong to vertices "
-                                     "(Shape functions = linear); use "
-                                     "Boundary ids instead."));
-              if (owned.is_element(function))
-                condition.functions.push_back(owned.index_within_set(function));
-            }
-    std::sort(condition.functions.begin(), condition.functions.end());
-    condition.functions.erase(std::unique(condition.functions.begin(),
-                                          condition.functions.end()),
-                              condition.functions.end());
+    for (const auto function : global)
+      condition.functions.push_back(owned.index_within_set(function));
   }
 
 

@@ -94,6 +94,15 @@ namespace MpmOtm
 
 
   template <int dim>
+  bool
+  Material<dim>::is_plastic() const
+  {
+    return false;
+  }
+
+
+
+  template <int dim>
   double
   Material<dim>::friction_angle() const
   {

@@ -249,6 +249,15 @@ namespace MpmOtm
 
 
   template <int dim>
+  bool
+  PlasticMaterial<dim>::is_plastic() const
+  {
+    return true;
+  }
+
+
+
+  template <int dim>
   std::string
   PlasticMaterial<dim>::to_text(const double value)
   {

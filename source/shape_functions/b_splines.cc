@@ -571,6 +571,38 @@ namespace MpmOtm
 
 
   template <int dim>
+  bool
+  BSplines<dim>::functions_in_box(
+    const BoundingBox<dim>               &box,
+    std::vector<types::global_dof_index> &functions) const
+  {
+    // The open knot vector of direction d repeats its end knots p times
+    // more: U = (k_0, ..., k_0, k_0, k_1, ..., k_n, k_n, ..., k_n).
+    // Function i has the knots U_i, ..., U_{i+p+1}.
+    const auto knot = [&](const unsigned int d, const unsigned int k) {
+      const unsigned int last = knots[d].size() - 1;
+      return knots[d][std::min(k < p ? 0u : k - p, last)];
+    };
+    functions.clear();
+    for (const auto global : locally_owned_functions())
+      {
+        const auto i = multi_index(global);
+        Point<dim> greville;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            for (unsigned int k = 1; k <= p; ++k)
+              greville[d] += knot(d, i[d] + k);
+            greville[d] /= p;
+          }
+        if (box.point_inside(greville, 1e-10))
+          functions.push_back(global);
+      }
+    return true;
+  }
+
+
+
+  template <int dim>
   types::global_dof_index
   BSplines<dim>::vertex_function(
     const typename Triangulation<dim>::active_cell_iterator &,

@@ -292,6 +292,15 @@ namespace MpmOtm
 
   template <int dim>
   bool
+  LinearLagrange<dim>::gradients_constant_on_cells() const
+  {
+    return simplex;
+  }
+
+
+
+  template <int dim>
+  bool
   LinearLagrange<dim>::is_linearly_complete() const
   {
     return true;

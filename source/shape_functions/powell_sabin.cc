@@ -372,6 +372,18 @@ namespace MpmOtm
 
 
   template <int dim>
+  bool
+  PowellSabin<dim>::functions_in_box(
+    const BoundingBox<dim> &,
+    std::vector<types::global_dof_index> &functions) const
+  {
+    functions.clear();
+    return false;
+  }
+
+
+
+  template <int dim>
   types::global_dof_index
   PowellSabin<dim>::vertex_function(
     const typename Triangulation<dim>::active_cell_iterator &,

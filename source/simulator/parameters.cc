@@ -3,6 +3,7 @@
 
 
 #include <mpm_otm/algorithms/method.h>
+#include <mpm_otm/algorithms/volumetric_locking_remedy.h>
 #include <mpm_otm/base/plugins.h>
 #include <mpm_otm/boundary_conditions/boundary_conditions.h>
 #include <mpm_otm/grid/background_grid.h>
@@ -89,6 +90,20 @@ namespace MpmOtm
                       "Use of the mass matrix:" +
                         PluginRegistry<MassMatrix<dim>>::documentation());
     prm.declare_entry(
+      "Volumetric locking remedy",
+      "automatic",
+      Patterns::Selection(
+        "automatic|none|" +
+        PluginRegistry<VolumetricLockingRemedy<dim>>::selection()),
+      "Treatment of volumetric locking, the over-stiff response of an "
+      "isochoric (plastic, or nearly incompressible elastic) flow when "
+      "several points per cell cannot all deform at constant volume:" +
+        PluginRegistry<VolumetricLockingRemedy<dim>>::documentation() +
+        ". none: the points' own velocity gradients. automatic: F-bar in 2D "
+        "and 3D if a material is plastic (von Mises, Drucker-Prager, "
+        "Mohr-Coulomb), none otherwise and for linear functions on "
+        "triangles/tetrahedra (manual, 'Volumetric locking').");
+    prm.declare_entry(
       "Deactivation threshold",
       "0",
       Patterns::Double(0.),
@@ -151,6 +166,7 @@ namespace MpmOtm
     PluginRegistry<NodalUpdate<dim>>::declare_parameters(prm);
     PluginRegistry<ShapeFunctions<dim>>::declare_parameters(prm);
     PluginRegistry<MassMatrix<dim>>::declare_parameters(prm);
+    PluginRegistry<VolumetricLockingRemedy<dim>>::declare_parameters(prm);
   }
 
 
@@ -180,6 +196,23 @@ namespace MpmOtm
       PluginRegistry<MassMatrix<dim>>::create(prm.get("Mass matrix"));
     mass_matrix->parse_parameters(prm);
     deactivation_threshold = prm.get_double("Deactivation threshold");
+    {
+      std::string remedy       = prm.get("Volumetric locking remedy");
+      automatic_locking_remedy = (remedy == "automatic");
+      if (automatic_locking_remedy)
+        {
+          bool plastic = false;
+          for (unsigned int id = 0; id < materials->n_materials(); ++id)
+            plastic = plastic || (*materials)[id].is_plastic();
+          remedy = (dim > 1 && plastic) ? "F-bar" : "none";
+        }
+      if (remedy != "none")
+        {
+          locking_remedy =
+            PluginRegistry<VolumetricLockingRemedy<dim>>::create(remedy);
+          locking_remedy->parse_parameters(prm);
+        }
+    }
 
     prm.enter_subsection("Time");
     end_time                     = prm.get_double("End time");

@@ -6,6 +6,7 @@
 
 #include <mpm_otm/algorithms/grid_motion.h>
 #include <mpm_otm/algorithms/stable_time_step.h>
+#include <mpm_otm/algorithms/volumetric_locking_remedy.h>
 #include <mpm_otm/base/collective_error.h>
 #include <mpm_otm/base/exception_message.h>
 #include <mpm_otm/boundary_conditions/boundary_conditions.h>
@@ -120,6 +121,19 @@ namespace MpmOtm
                   fixed_components,
                   deactivation_threshold,
                   mass_matrix->needs_material_boundary());
+    if (locking_remedy && automatic_locking_remedy &&
+        shape_functions->gradients_constant_on_cells())
+      {
+        locking_remedy.reset();
+        pcout << "volumetric locking remedy: none (automatic): linear "
+                 "functions on triangles/tetrahedra have one velocity "
+                 "gradient per cell, so F-bar has nothing to average; the "
+                 "crossed triangles of Mesh/Cell type = simplex do not lock, "
+                 "other triangulations may (manual, 'Volumetric locking')"
+              << std::endl;
+      }
+    if (locking_remedy)
+      locking_remedy->initialize(*shape_functions, *system);
     // The stable time step of this discretisation at the start; a larger
     // time step is rejected before anything is written.
     const auto stable = StableTimeStep<dim>().estimate(*points,
@@ -228,6 +242,8 @@ namespace MpmOtm
     pcout << "set-up of the shape functions: wall time = " << std::fixed
           << std::setprecision(3) << shape_function_timer.wall_time() << " s"
           << std::defaultfloat << std::endl;
+    if (locking_remedy)
+      pcout << locking_remedy->description() << std::endl;
     if (resume)
       pcout << "resumed from <" << resumed_from << ">, written after time step "
             << resumed_step << " (t = " << current_time << ")" << std::endl;

@@ -8,6 +8,7 @@
 #include <mpm_otm/algorithms/nodal_update.h>
 #include <mpm_otm/algorithms/stable_time_step.h>
 #include <mpm_otm/algorithms/time_stepper.h>
+#include <mpm_otm/algorithms/volumetric_locking_remedy.h>
 #include <mpm_otm/base/collective_error.h>
 #include <mpm_otm/base/exception_message.h>
 #include <mpm_otm/base/stop_signal.h>
@@ -69,6 +70,7 @@ namespace MpmOtm
                                *problem_description,
                                *boundary_conditions,
                                *damping,
+                               locking_remedy.get(),
                                timer);
 
       AssertThrow(end_time / time_step < 1e9,

@@ -5,6 +5,7 @@
 
 #include <mpm_otm/algorithms/grid_motion.h>
 #include <mpm_otm/algorithms/nodal_update.h>
+#include <mpm_otm/algorithms/volumetric_locking_remedy.h>
 #include <mpm_otm/base/checkpoint_state.h>
 #include <mpm_otm/boundary_conditions/boundary_conditions.h>
 #include <mpm_otm/grid_system/local_damping.h>
@@ -43,6 +44,8 @@ namespace MpmOtm
    *  6. move the points, x_p += dt sum_i phi_i v_i^{s+1} (Eqs. 26 / 52),
    *     update F_p (Eqs. 28-29 / 55), V_p = det(F_p) V_p^0 (Eqs. 30 / 53)
    *     and the stress; for OTM v_p = (x_p^{s+1} - x_p^s) / dt (Eq. 57);
+   *     with a VolumetricLockingRemedy, the velocity gradients of all points
+   *     are computed first and changed by it before F_p and the stress;
    *  7. move the grid with the nodes (OTM, unified) and find the cells of
    *     the moved points (GridMotion).
    * A non-finite velocity or stress stops the run naming the point.
@@ -51,17 +54,18 @@ namespace MpmOtm
   class TimeStepper
   {
   public:
-    TimeStepper(MaterialPoints<dim>        &material_points,
-                const ShapeFunctions<dim>  &shape_functions,
-                NodalSystem<dim>           &system,
-                MassMatrix<dim>            &mass_matrix,
-                const NodalUpdate<dim>     &nodal_update,
-                GridMotion<dim>            &grid_motion,
-                const MaterialLibrary<dim> &materials,
-                const Problem<dim>         &problem,
-                BoundaryConditions<dim>    &boundary_conditions,
-                const LocalDamping<dim>    &damping,
-                TimerOutput                &timer);
+    TimeStepper(MaterialPoints<dim>          &material_points,
+                const ShapeFunctions<dim>    &shape_functions,
+                NodalSystem<dim>             &system,
+                MassMatrix<dim>              &mass_matrix,
+                const NodalUpdate<dim>       &nodal_update,
+                GridMotion<dim>              &grid_motion,
+                const MaterialLibrary<dim>   &materials,
+                const Problem<dim>           &problem,
+                BoundaryConditions<dim>      &boundary_conditions,
+                const LocalDamping<dim>      &damping,
+                VolumetricLockingRemedy<dim> *locking_remedy,
+                TimerOutput                  &timer);
 
     /**
      * Advance from @p time to @p time + @p dt.
@@ -123,8 +127,14 @@ namespace MpmOtm
     const Problem<dim>         &problem;
     BoundaryConditions<dim>    &boundary_conditions;
     const LocalDamping<dim>    &damping;
-    TimerOutput                &timer;
-    ParticleShapeData<dim>      data;
+    /// Null without a remedy.
+    VolumetricLockingRemedy<dim> *locking_remedy;
+    TimerOutput                  &timer;
+    ParticleShapeData<dim>        data;
+    /// The velocity and the velocity gradient of each point in this step,
+    /// in the order of the particle handler.
+    std::vector<Tensor<1, dim>> point_velocities;
+    std::vector<Tensor<2, dim>> velocity_gradients;
 
     /**
      * The constraints of the acceleration solves: the system's, with the

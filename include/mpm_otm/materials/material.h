@@ -112,6 +112,14 @@ namespace MpmOtm
       const ArrayView<const double> &internal_variables) const;
 
     /**
+     * Whether the model flows plastically (false for the elastic models).
+     * Isochoric plastic flow locks with linear functions and several points
+     * per cell, so the default volumetric locking remedy depends on it.
+     */
+    virtual bool
+    is_plastic() const;
+
+    /**
      * The friction angle phi (radians) of a frictional model, 0 otherwise;
      * a geostatic initial stress uses K0 = 1 - sin(phi) by default for
      * phi > 0 and the elastic nu / (1 - nu) otherwise.

@@ -114,6 +114,16 @@ namespace MpmOtm
       const unsigned int v) const override;
 
     /**
+     * The locally owned functions whose Greville point (the average of the
+     * p inner knots of each direction, at the middle of the function's
+     * support: the point a control coefficient belongs to) lies in @p box.
+     */
+    bool
+    functions_in_box(
+      const BoundingBox<dim>               &box,
+      std::vector<types::global_dof_index> &functions) const override;
+
+    /**
      * The DoFHandler of FE_Bernstein(p) on the grid.
      */
     const DoFHandler<dim> &

@@ -68,6 +68,12 @@ namespace MpmOtm
     is_linearly_complete() const override;
 
     /**
+     * True on triangles/tetrahedra.
+     */
+    bool
+    gradients_constant_on_cells() const override;
+
+    /**
      * Whether the hypercube cell with @p vertices (in deal.II's order) is
      * the affine image of the reference cell (a parallelogram or a
      * parallelepiped), to round-off: then its Jacobian is constant.

@@ -175,6 +175,14 @@ namespace MpmOtm
       std::vector<types::global_dof_index> &functions) const override;
 
     /**
+     * False: three functions belong to each vertex.
+     */
+    bool
+    functions_in_box(
+      const BoundingBox<dim>               &box,
+      std::vector<types::global_dof_index> &functions) const override;
+
+    /**
      * numbers::invalid_dof_index: three functions per vertex, none of which
      * moves with it.
      */

@@ -1,6 +1,7 @@
 #ifndef mpm_otm_shape_functions_shape_functions_h
 #define mpm_otm_shape_functions_shape_functions_h
 
+#include <deal.II/base/bounding_box.h>
 #include <deal.II/base/index_set.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/partitioner.h>
@@ -11,6 +12,7 @@
 #include <mpm_otm/shape_functions/particle_shape_data.h>
 
 #include <string>
+#include <vector>
 
 namespace MpmOtm
 {
@@ -100,6 +102,17 @@ namespace MpmOtm
      */
     virtual bool
     is_linearly_complete() const = 0;
+
+    /**
+     * True if the gradients of the functions are constant on each cell
+     * (linear functions on triangles/tetrahedra), so that all points of a
+     * cell have the same velocity gradient. False by default.
+     */
+    virtual bool
+    gradients_constant_on_cells() const
+    {
+      return false;
+    }
 
     /**
      * How the functions follow the material when the grid moves with it
@@ -233,6 +246,18 @@ namespace MpmOtm
     vertex_function(
       const typename Triangulation<dim>::active_cell_iterator &cell,
       const unsigned int                                       v) const = 0;
+
+    /**
+     * The locally owned functions (global indices, sorted) that belong to a
+     * point inside @p box, for a condition on a box of nodes (a footing, a
+     * platen) that prescribes their coefficients. By default the functions
+     * of the locally owned cells' vertices in the box (vertex_function()).
+     * Returns false (on every rank) if the family's functions do not belong
+     * to points.
+     */
+    virtual bool
+    functions_in_box(const BoundingBox<dim>               &box,
+                     std::vector<types::global_dof_index> &functions) const;
 
     /**
      * The DoFHandler of the finite element the cells carry.

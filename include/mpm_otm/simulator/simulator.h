@@ -48,6 +48,8 @@ namespace MpmOtm
   class TimeStepper;
   template <int dim>
   class EnergyMonitor;
+  template <int dim>
+  class VolumetricLockingRemedy;
   class CheckpointState;
 
   /**
@@ -204,6 +206,11 @@ namespace MpmOtm
     std::unique_ptr<BoundaryConditions<dim>> boundary_conditions;
     std::unique_ptr<LocalDamping<dim>>       damping;
     std::unique_ptr<Checkpoint<dim>>         checkpoint;
+    /// Volumetric locking remedy = automatic: the remedy is dropped where
+    /// the shape functions leave it nothing to do.
+    bool automatic_locking_remedy = false;
+    /// Null for Volumetric locking remedy = none.
+    std::unique_ptr<VolumetricLockingRemedy<dim>> locking_remedy;
     /// The step after which the checkpoint resumed from was written (0: a
     /// new run).
     unsigned int resumed_step = 0;
