@@ -291,9 +291,11 @@ namespace MpmOtm
     const double               time,
     const MaterialPoints<dim> &material_points)
   {
+    // A 1D patch cannot hold a 3 x 3 tensor: components there too.
     ParticlePatches<dim> patches(material_points,
                                  *materials,
-                                 field_format == TimeSeries::Format::hdf5);
+                                 dim == 1 ||
+                                   field_format == TimeSeries::Format::hdf5);
     particle_series.write(patches,
                           output_directory,
                           field_format,

@@ -9,12 +9,68 @@
 
 namespace MpmOtm
 {
+  namespace
+  {
+    /**
+     * The three-dimensional Cauchy stress of a point: its in-plane stress
+     * and, in 2D (plane strain), sigma_zz; in 1D (uniaxial strain) the
+     * lateral stress in yy and zz.
+     */
+    template <int dim>
+    SymmetricTensor<2, 3>
+    full_stress(const SymmetricTensor<2, dim> &sigma, const double out_of_plane)
+    {
+      SymmetricTensor<2, 3> full;
+      for (unsigned int i = 0; i < dim; ++i)
+        for (unsigned int j = i; j < dim; ++j)
+          full[i][j] = sigma[i][j];
+      for (unsigned int d = dim; d < 3; ++d)
+        full[d][d] = out_of_plane;
+      return full;
+    }
+
+    /**
+     * The logarithmic (Hencky) strain of the current configuration,
+     * ln(V) = ln(F F^T) / 2, three-dimensional: F has F_zz = 1 in 2D (plane
+     * strain) and F_yy = F_zz = 1 in 1D (uniaxial strain).
+     */
+    template <int dim>
+    SymmetricTensor<2, 3>
+    logarithmic_strain(const Tensor<2, dim> &F)
+    {
+      Tensor<2, 3> F3 = unit_symmetric_tensor<3>();
+      for (unsigned int i = 0; i < dim; ++i)
+        for (unsigned int j = 0; j < dim; ++j)
+          F3[i][j] = F[i][j];
+      const SymmetricTensor<2, 3> left_stretch_squared =
+        symmetrize(F3 * transpose(F3));
+      SymmetricTensor<2, 3> strain;
+      for (const auto &[value, direction] : eigenvectors(left_stretch_squared))
+        strain += 0.5 * std::log(value) *
+                  symmetrize(outer_product(direction, direction));
+      return strain;
+    }
+
+    /**
+     * The name of component (i, j) of a three-dimensional tensor.
+     */
+    std::string
+    component(const std::string &name,
+              const unsigned int i,
+              const unsigned int j)
+    {
+      return name + "_" + "xyz"[i] + "xyz"[j];
+    }
+  } // namespace
+
+
+
   template <int dim>
   ParticlePatches<dim>::ParticlePatches(
     const MaterialPoints<dim>  &material_points,
     const MaterialLibrary<dim> &materials,
-    const bool                  stress_as_components)
-    : stress_as_components(stress_as_components)
+    const bool                  tensors_as_components)
+    : tensors_as_components(tensors_as_components)
   {
     // zlib's fastest level: the best level took several times longer per
     // output for files a few percent smaller.
@@ -26,24 +82,27 @@ namespace MpmOtm
       names.push_back("displacement");
     for (unsigned int d = 0; d < dim; ++d)
       names.push_back("velocity");
-    for (unsigned int i = 0; i < dim; ++i)
-      for (unsigned int j = 0; j < dim; ++j)
-        if (dim == 1 || (stress_as_components && j >= i))
-          names.push_back(std::string("stress_") + "xyz"[i] + "xyz"[j]);
-        else if (!stress_as_components)
-          names.push_back("stress");
-    if (dim == 2)
-      names.push_back("stress_zz");
-    if (dim == 1)
-      names.push_back("stress_lateral");
+    // The three-dimensional tensors: all nine components for the VTU
+    // writer, the six independent ones (in 2D the four that are not zero by
+    // plane strain) as scalars for HDF5.
+    const auto add_tensor = [&](const std::string &name) {
+      for (unsigned int i = 0; i < 3; ++i)
+        for (unsigned int j = 0; j < 3; ++j)
+          if (!tensors_as_components)
+            names.push_back(name);
+          else if (j >= i && (i == j || j < dim))
+            names.push_back(component(name, i, j));
+    };
+    add_tensor("stress");
     names.insert(names.end(),
                  {"mean_stress",
                   "von_mises_stress",
-                  "det_F",
-                  "volume",
-                  "mass",
-                  "material",
-                  "plastic_strain"});
+                  "principal_stress_1",
+                  "principal_stress_2",
+                  "principal_stress_3"});
+    add_tensor("log_strain");
+    names.insert(names.end(),
+                 {"det_F", "volume", "mass", "material", "plastic_strain"});
     const auto internal = materials.internal_variable_names();
     names.insert(names.end(), internal.begin(), internal.end());
     names.push_back("id");
@@ -52,6 +111,12 @@ namespace MpmOtm
     locations.reserve(
       material_points.particle_handler().n_locally_owned_particles());
     values.reserve(locations.capacity() * n_fields);
+    const auto push_tensor = [&](const SymmetricTensor<2, 3> &tensor) {
+      for (unsigned int i = 0; i < 3; ++i)
+        for (unsigned int j = 0; j < 3; ++j)
+          if (!tensors_as_components || (j >= i && (i == j || j < dim)))
+            values.push_back(tensor[i][j]);
+    };
     for (const auto &particle : material_points.particle_handler())
       {
         const auto properties = particle.get_properties();
@@ -62,24 +127,17 @@ namespace MpmOtm
           values.push_back(particle.get_location()[d] - X[d]);
         for (unsigned int d = 0; d < dim; ++d)
           values.push_back(properties[Layout::velocity + d]);
-        const SymmetricTensor<2, dim> sigma = Layout::get_stress(properties);
-        for (unsigned int i = 0; i < dim; ++i)
-          for (unsigned int j = stress_as_components ? i : 0; j < dim; ++j)
-            values.push_back(sigma[i][j]);
-        const double out_of_plane = Layout::get_out_of_plane_stress(properties);
-        if (dim < 3)
-          values.push_back(out_of_plane);
-        // The three-dimensional stress: plane strain or uniaxial strain.
-        SymmetricTensor<2, 3> full;
-        for (unsigned int i = 0; i < dim; ++i)
-          for (unsigned int j = i; j < dim; ++j)
-            full[i][j] = sigma[i][j];
-        for (unsigned int d = dim; d < 3; ++d)
-          full[d][d] = out_of_plane;
-        values.push_back(trace(full) / 3.);
-        values.push_back(std::sqrt(1.5) * deviator(full).norm());
-        values.push_back(
-          determinant(Layout::get_deformation_gradient(properties)));
+        const SymmetricTensor<2, 3> sigma =
+          full_stress(Layout::get_stress(properties),
+                      Layout::get_out_of_plane_stress(properties));
+        push_tensor(sigma);
+        values.push_back(trace(sigma) / 3.);
+        values.push_back(std::sqrt(1.5) * deviator(sigma).norm());
+        const auto principal = eigenvalues(sigma);
+        values.insert(values.end(), principal.begin(), principal.end());
+        const Tensor<2, dim> F = Layout::get_deformation_gradient(properties);
+        push_tensor(logarithmic_strain(F));
+        values.push_back(determinant(F));
         values.push_back(Layout::volume(properties));
         values.push_back(properties[Layout::mass]);
         const unsigned int id = Layout::get_material_id(properties);
@@ -136,27 +194,36 @@ namespace MpmOtm
                DataComponentInterpretation::DataComponentInterpretation>>
   ParticlePatches<dim>::get_nonscalar_data_ranges() const
   {
-    if (dim == 1)
-      return {};
     std::vector<
       std::tuple<unsigned int,
                  unsigned int,
                  std::string,
                  DataComponentInterpretation::DataComponentInterpretation>>
-      ranges = {{0,
-                 dim - 1,
-                 "displacement",
-                 DataComponentInterpretation::component_is_part_of_vector},
-                {dim,
-                 2 * dim - 1,
-                 "velocity",
-                 DataComponentInterpretation::component_is_part_of_vector}};
-    if (!stress_as_components)
-      ranges.emplace_back(
-        2 * dim,
-        2 * dim + dim * dim - 1,
-        "stress",
-        DataComponentInterpretation::component_is_part_of_tensor);
+      ranges;
+    if (dim > 1)
+      {
+        ranges.emplace_back(
+          0,
+          dim - 1,
+          "displacement",
+          DataComponentInterpretation::component_is_part_of_vector);
+        ranges.emplace_back(
+          dim,
+          2 * dim - 1,
+          "velocity",
+          DataComponentInterpretation::component_is_part_of_vector);
+      }
+    if (!tensors_as_components)
+      for (const std::string name : {"stress", "log_strain"})
+        {
+          const unsigned int first =
+            std::find(names.begin(), names.end(), name) - names.begin();
+          ranges.emplace_back(
+            first,
+            first + 8,
+            name,
+            DataComponentInterpretation::component_is_part_of_tensor);
+        }
     return ranges;
   }
 

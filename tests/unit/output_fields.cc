@@ -1,8 +1,10 @@
 // The VTU files carry the fields the manual promises a ParaView user: the
-// particles' displacement and velocity as vectors, the stress as a tensor
-// with the out-of-plane stress_zz beside it, plastic_strain, det_F and
-// material; the grid's nodal_mass and nodal_velocity as a vector. Vectors
-// and tensors are written with 3 and 9 components in 2D (VTU pads them).
+// particles' displacement and velocity as vectors, the three-dimensional
+// stress (with sigma_zz of plane strain in its place) and logarithmic strain
+// as 3 x 3 tensors, the mean, von Mises and principal stresses,
+// plastic_strain, det_F and material; the grid's nodal_mass and
+// nodal_velocity as a vector. Vectors are written with 3 components in 2D
+// (VTU pads them). The values themselves: unit/stress_output.
 
 #include <fstream>
 #include <iterator>
@@ -77,8 +79,15 @@ main(int argc, char **argv)
   expect_field("particles", particles, "displacement", 3);
   expect_field("particles", particles, "velocity", 3);
   expect_field("particles", particles, "stress", 9);
-  for (const std::string name :
-       {"stress_zz", "plastic_strain", "det_F", "material"})
+  expect_field("particles", particles, "log_strain", 9);
+  for (const std::string name : {"mean_stress",
+                                 "von_mises_stress",
+                                 "principal_stress_1",
+                                 "principal_stress_2",
+                                 "principal_stress_3",
+                                 "plastic_strain",
+                                 "det_F",
+                                 "material"})
     expect_field("particles", particles, name, 1);
   const std::string grid = read("grid_00001.0.vtu");
   expect_field("grid", grid, "nodal_mass", 1);

@@ -24,14 +24,18 @@ namespace MpmOtm
 
   /**
    * The material points of this rank as zero-dimensional patches for
-   * ParaView, with displacement and velocity (vectors), the stress (a
-   * tensor; in 2D and 1D also the stress out of the plane or line), the
-   * mean stress tr(sigma)/3 and the von Mises stress sqrt(3 J2) of the
-   * three-dimensional stress, det F, volume, mass, material, equivalent
-   * plastic strain, the materials' internal variables and the id. With
-   * @p stress_as_components the stress is written as its independent
-   * components stress_xx, stress_xy, ... instead of a tensor, which HDF5
-   * output needs (deal.II 9.4's XDMF index knows scalars and vectors).
+   * ParaView, with displacement and velocity (vectors); the
+   * three-dimensional Cauchy stress (a 3 x 3 tensor, with sigma_zz of plane
+   * strain in 2D and the lateral stress of uniaxial strain in 1D in their
+   * places), its mean tr(sigma)/3, its von Mises stress sqrt(3 J2) and its
+   * principal stresses sigma_1 >= sigma_2 >= sigma_3 (tension positive);
+   * the logarithmic strain ln(V) = ln(F F^T)/2 (a 3 x 3 tensor); det F,
+   * volume, mass, material, equivalent plastic strain, the materials'
+   * internal variables and the id. With @p tensors_as_components the two
+   * tensors are written as their independent components stress_xx,
+   * stress_yy, stress_zz, stress_xy, ... (in 2D and 1D without those that
+   * plane or uniaxial strain keeps at zero) instead, which HDF5 output
+   * needs (deal.II 9.4's XDMF index knows scalars and vectors).
    * The values are kept in one array, point by point, in double precision;
    * the patches (single precision, one allocation per point) are built
    * only for the VTU writer.
@@ -42,7 +46,7 @@ namespace MpmOtm
   public:
     ParticlePatches(const MaterialPoints<dim>  &material_points,
                     const MaterialLibrary<dim> &materials,
-                    const bool                  stress_as_components);
+                    const bool                  tensors_as_components);
 
     /**
      * The points as deal.II's write_hdf5_parallel lays them out, but
@@ -78,7 +82,7 @@ namespace MpmOtm
                  DataComponentInterpretation::DataComponentInterpretation>>
     get_nonscalar_data_ranges() const override;
 
-    const bool               stress_as_components;
+    const bool               tensors_as_components;
     std::vector<std::string> names;
     /// The points' locations and, point by point, the values of all names.
     std::vector<Point<dim>> locations;
