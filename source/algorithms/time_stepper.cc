@@ -174,10 +174,23 @@ namespace MpmOtm
       particle_velocity ==
       NodalUpdate<dim>::ParticleVelocity::from_displacement;
 
-    // Pass 1: the velocity of each point and its velocity gradient.
-    const unsigned int n_points = data.n_particles();
-    point_velocities.resize(n_points);
-    velocity_gradients.resize(n_points);
+    // The velocity of each point and its velocity gradient; the point moves
+    // with the velocity. Without a remedy the point's F and stress follow
+    // at once; with one, after it has changed all points' gradients.
+    types::particle_index bad_point = numbers::invalid_unsigned_int;
+    Point<dim>            bad_location;
+    const auto            update_state = [&](auto                 &particle,
+                                  const Tensor<2, dim> &velocity_gradient) {
+      if (!update_deformation_and_stress(particle.get_properties(),
+                                         velocity_gradient,
+                                         dt) &&
+          bad_point == numbers::invalid_unsigned_int)
+        {
+          bad_point    = particle.get_id();
+          bad_location = particle.get_location();
+        }
+    };
+    velocity_gradients.resize(locking_remedy ? data.n_particles() : 0);
     {
       // The nodal velocities and accelerations of a batch's functions,
       // gathered once for the points of the batch.
@@ -230,52 +243,22 @@ namespace MpmOtm
             Layout::set_vector(properties, Layout::velocity, advanced_velocity);
           else if (velocity_from_displacement)
             Layout::set_vector(properties, Layout::velocity, point_velocity);
-          point_velocities[p]   = point_velocity;
-          velocity_gradients[p] = velocity_gradient;
-          ++p;
+          particle.set_location(particle.get_location() + dt * point_velocity);
+          if (locking_remedy)
+            velocity_gradients[p++] = velocity_gradient;
+          else
+            update_state(particle, velocity_gradient);
         }
     }
 
     if (locking_remedy)
-      locking_remedy->correct(material_points, data, dt, velocity_gradients);
-
-    // Pass 2: deformation gradient, stress and position.
-    types::particle_index bad_point = numbers::invalid_unsigned_int;
-    Point<dim>            bad_location;
-    unsigned int          p = 0;
-    for (auto &particle : material_points.particle_handler())
       {
-        const auto            properties        = particle.get_properties();
-        const Tensor<2, dim> &velocity_gradient = velocity_gradients[p];
-        Tensor<2, dim>        F = Layout::get_deformation_gradient(properties);
-        F = (unit_symmetric_tensor<dim>() + dt * velocity_gradient) * F;
-        Layout::set_deformation_gradient(properties, F);
-
-        const unsigned int id    = Layout::get_material_id(properties);
-        StressState<dim>   state = materials.stress_state(id, properties);
-        materials[id].update_stress(F, velocity_gradient, dt, state);
-        materials.store(state, properties);
-        const SymmetricTensor<2, dim> &sigma = state.stress;
-
-        const Point<dim> location =
-          particle.get_location() + dt * point_velocities[p];
-        particle.set_location(location);
-        ++p;
-
-        const double check =
-          sigma.norm() +
-          Layout::get_vector(properties, Layout::velocity).norm() +
-          Layout::volume(properties);
-        const bool healthy = std::isfinite(check) && determinant(F) > 0.;
-        if (!healthy && bad_point == numbers::invalid_unsigned_int)
-          {
-            bad_point    = particle.get_id();
-            bad_location = location;
-          }
+        locking_remedy->correct(material_points, data, dt, velocity_gradients);
+        unsigned int p = 0;
+        for (auto &particle : material_points.particle_handler())
+          update_state(particle, velocity_gradients[p++]);
+        locking_remedy->after_stress_update(material_points);
       }
-
-    if (locking_remedy)
-      locking_remedy->after_stress_update(material_points);
 
     std::string problem;
     if (bad_point != numbers::invalid_unsigned_int)
@@ -290,6 +273,32 @@ namespace MpmOtm
                             problem,
                             "The computation became unstable: ",
                             EnergyMonitor<dim>::advice());
+  }
+
+
+
+  template <int dim>
+  bool
+  TimeStepper<dim>::update_deformation_and_stress(
+    const ArrayView<double> &properties,
+    const Tensor<2, dim>    &velocity_gradient,
+    const double             dt) const
+  {
+    using Layout     = PropertyLayout<dim>;
+    Tensor<2, dim> F = Layout::get_deformation_gradient(properties);
+    F = (unit_symmetric_tensor<dim>() + dt * velocity_gradient) * F;
+    Layout::set_deformation_gradient(properties, F);
+
+    const unsigned int id    = Layout::get_material_id(properties);
+    StressState<dim>   state = materials.stress_state(id, properties);
+    materials[id].update_stress(F, velocity_gradient, dt, state);
+    materials.store(state, properties);
+
+    const double check =
+      state.stress.norm() +
+      Layout::get_vector(properties, Layout::velocity).norm() +
+      Layout::volume(properties);
+    return std::isfinite(check) && determinant(F) > 0.;
   }
 
 

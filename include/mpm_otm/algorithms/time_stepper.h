@@ -99,6 +99,17 @@ namespace MpmOtm
 
   private:
     /**
+     * Update the deformation gradient F_p = (I + dt L_p) F_p and the
+     * stress of the point with the property array @p properties from its
+     * velocity gradient @p velocity_gradient L_p; false if the result is
+     * not finite or det F_p <= 0.
+     */
+    bool
+    update_deformation_and_stress(const ArrayView<double> &properties,
+                                  const Tensor<2, dim>    &velocity_gradient,
+                                  const double             dt) const;
+
+    /**
      * v_p += dt sum_i phi_i a_i for every point (MUSL, before its
      * projection).
      */
@@ -131,9 +142,8 @@ namespace MpmOtm
     VolumetricLockingRemedy<dim> *locking_remedy;
     TimerOutput                  &timer;
     ParticleShapeData<dim>        data;
-    /// The velocity and the velocity gradient of each point in this step,
-    /// in the order of the particle handler.
-    std::vector<Tensor<1, dim>> point_velocities;
+    /// With a volumetric locking remedy: the velocity gradient of each
+    /// point in this step, in the order of the particle handler.
     std::vector<Tensor<2, dim>> velocity_gradients;
 
     /**
