@@ -3,6 +3,7 @@
 #include <mpm_otm/grid_system/nodal_system.h>
 #include <mpm_otm/material_points/material_points.h>
 #include <mpm_otm/material_points/property_layout.h>
+#include <mpm_otm/materials/material_library.h>
 #include <mpm_otm/shape_functions/shape_functions.h>
 
 #include <algorithm>
@@ -59,8 +60,10 @@ namespace MpmOtm
   template <int dim>
   void
   FBar<dim>::initialize(const ShapeFunctions<dim> &shape_functions,
-                        const NodalSystem<dim> &)
+                        const NodalSystem<dim> &,
+                        const MaterialLibrary<dim> &materials)
   {
+    this->materials = &materials;
     AssertThrow(!shape_functions.gradients_constant_on_cells(),
                 ExcMessage(
                   "Volumetric locking remedy = F-bar: the gradients of "
@@ -121,7 +124,19 @@ namespace MpmOtm
           determinant(unit + dt * velocity_gradients[p]);
         weight[p]    = properties[Layout::initial_volume];
         positions[p] = particle.get_location();
-        material[p]  = Layout::get_material_id(properties);
+        // A point that has lost contact (a granular point opened beyond
+        // its density at contact) is its own group: averaging the volume of
+        // a dilated, stress-free point with that of its dense neighbours
+        // would swell them, and their forces V_p sigma_p grad phi_i with
+        // them.
+        const unsigned int id = Layout::get_material_id(properties);
+        material[p] =
+          (*materials)[id].is_disconnected(
+            ArrayView<const double>(properties.data() +
+                                      materials->first_internal_variable(id),
+                                    materials->n_internal_variables(id))) ?
+            numbers::invalid_unsigned_int :
+            id;
         ++p;
       }
     AssertDimension(p, n);
@@ -152,6 +167,11 @@ namespace MpmOtm
     // the volume change of the soil beside it.
     for (unsigned int start = first; start < end; ++start)
       {
+        if (material[start] == numbers::invalid_unsigned_int)
+          {
+            average_jacobian[start] = trial_jacobian[start];
+            continue;
+          }
         if (start > first &&
             std::find(material.begin() + first,
                       material.begin() + start,

@@ -103,6 +103,15 @@ namespace MpmOtm
 
 
   template <int dim>
+  bool
+  Material<dim>::is_disconnected(const ArrayView<const double> &) const
+  {
+    return false;
+  }
+
+
+
+  template <int dim>
   double
   Material<dim>::friction_angle() const
   {

@@ -258,6 +258,17 @@ namespace MpmOtm
 
 
   template <int dim>
+  bool
+  PlasticMaterial<dim>::is_disconnected(
+    const ArrayView<const double> &internal_variables) const
+  {
+    return can_separate() &&
+           internal_variables[internal_variables.size() - 1] > 0.;
+  }
+
+
+
+  template <int dim>
   std::string
   PlasticMaterial<dim>::to_text(const double value)
   {

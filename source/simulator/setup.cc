@@ -133,7 +133,7 @@ namespace MpmOtm
               << std::endl;
       }
     if (locking_remedy)
-      locking_remedy->initialize(*shape_functions, *system);
+      locking_remedy->initialize(*shape_functions, *system, *materials);
     // The stable time step of this discretisation at the start; a larger
     // time step is rejected before anything is written.
     const auto stable = StableTimeStep<dim>().estimate(*points,

@@ -10,12 +10,15 @@
 //    each cell keeps the volume of each material; after the stress update
 //    every point's mean stress tr(sigma) / 3 (with sigma_zz) is the linear
 //    least-squares fit of its group's, and its deviator is unchanged.
+//  - a point that has lost contact (Drucker-Prager's separation open)
+//    keeps its own J, and the other points of its cell average without it;
 //  - with one point per cell F-bar changes nothing.
 
 #include <mpm_otm/algorithms/f_bar.h>
 #include <mpm_otm/grid_system/nodal_system.h>
 #include <mpm_otm/material_points/material_points.h>
 #include <mpm_otm/material_points/property_layout.h>
+#include <mpm_otm/materials/material_library.h>
 #include <mpm_otm/shape_functions/shape_functions.h>
 
 #include <map>
@@ -37,6 +40,9 @@ set Dimension = 2
 set Problem = custom
 set Materials = block
 set Bodies = soil, block
+subsection Material
+  set Model = Drucker-Prager
+end
 subsection Mesh
   set Lower corner = 0, 0
   set Upper corner = 1, 1
@@ -120,7 +126,7 @@ end
   }
 
   Run
-  correct(const unsigned int points_per_cell)
+  correct(const unsigned int points_per_cell, const bool disconnect = false)
   {
     Run run;
     run.simulator =
@@ -140,11 +146,25 @@ end
         run.materials.push_back(
           PropertyLayout<2>::get_material_id(particle.get_properties()));
       }
+    // With @p disconnect, the soil point nearest the origin has lost
+    // contact: its separation (Drucker-Prager's last internal variable) is
+    // open.
+    if (disconnect)
+      for (auto &particle :
+           const_cast<MaterialPoints<2> &>(points).particle_handler())
+        if (particle.get_location().distance(Point<2>(0.125, 0.125)) < 1e-12)
+          {
+            const auto &library = run.simulator->material_library();
+            particle.get_properties()[library.first_internal_variable(0) +
+                                      library.n_internal_variables(0) - 1] =
+              1e-3;
+          }
     ParameterHandler prm;
     FBar<2>          f_bar;
     f_bar.parse_parameters(prm);
     f_bar.initialize(run.simulator->shape_function_family(),
-                     run.simulator->nodal_system());
+                     run.simulator->nodal_system(),
+                     run.simulator->material_library());
     run.corrected = run.original;
     f_bar.correct(points, run.data, dt, run.corrected);
 
@@ -286,6 +306,34 @@ main(int argc, char **argv)
                "kept, to 1e-14; after the stress update each point's mean "
                "stress is its group's linear fit (it changed by up to "
             << rounded(mean_spread) << " Pa) and its deviator is kept"
+            << std::endl;
+  }
+
+  {
+    // A point that has lost contact keeps its J; the other three of its
+    // cell take their own mean.
+    const Run    run = correct(2, true);
+    double       own = 1, error = 0, mean = 0;
+    unsigned int n = 0;
+    for (unsigned int p = 0; p < run.original.size(); ++p)
+      if (run.locations[p][0] < 0.5 && run.locations[p][1] < 0.5 &&
+          run.locations[p].distance(Point<2>(0.125, 0.125)) > 1e-12)
+        {
+          mean += determinant(increment(run.original[p]));
+          ++n;
+        }
+    mean /= n;
+    for (unsigned int p = 0; p < run.original.size(); ++p)
+      if (run.locations[p].distance(Point<2>(0.125, 0.125)) < 1e-12)
+        own = (run.corrected[p] - run.original[p]).norm();
+      else if (run.locations[p][0] < 0.5 && run.locations[p][1] < 0.5)
+        error =
+          std::max(error,
+                   std::abs(determinant(increment(run.corrected[p])) - mean));
+    check(n == 3 && own == 0., "a point that lost contact was averaged");
+    check(error < 1e-14, "the points in contact do not take their mean");
+    deallog << "a point that has lost contact keeps its J; the other three "
+               "of its cell take their mean"
             << std::endl;
   }
 

@@ -44,6 +44,13 @@ namespace MpmOtm
    * off on 0.5 m cells). The fit is a projection in the weighted norm, so
    * it only takes elastic energy away.
    *
+   * Points that have lost contact (Material::is_disconnected(): a granular
+   * point opened beyond the density at which it lost contact) keep their
+   * own J and stress: averaging the volume of such a dilated, stress-free
+   * point with its dense neighbours' swelled them, and the forces
+   * V_p sigma_p grad phi_i with them (a dilatant column collapse ran away
+   * at its base twice as early as without a remedy).
+   *
    * The average is over the points of one material in one cell, weighted
    * by their initial volumes, so that the cell's volume of each material is
    * kept: Jbar = sum_p V_p^0 J_p / sum_p V_p^0 (the constant dilatation of
@@ -71,8 +78,9 @@ namespace MpmOtm
     parse_parameters(ParameterHandler &prm) override;
 
     void
-    initialize(const ShapeFunctions<dim> &shape_functions,
-               const NodalSystem<dim>    &system) override;
+    initialize(const ShapeFunctions<dim>  &shape_functions,
+               const NodalSystem<dim>     &system,
+               const MaterialLibrary<dim> &materials) override;
 
     std::string
     description() const override;
@@ -91,6 +99,9 @@ namespace MpmOtm
     after_stress_update(MaterialPoints<dim> &material_points) override;
 
   private:
+    /// The materials of the run (which points have lost contact).
+    const MaterialLibrary<dim> *materials = nullptr;
+
     /**
      * Set the average Jacobians of the points [first, end) (of one cell):
      * the mean of each material's points among them.
@@ -103,7 +114,9 @@ namespace MpmOtm
     std::vector<std::pair<unsigned int, unsigned int>> groups;
 
     /// Per point, in the order of the particle handler: the trial Jacobian
-    /// J_p, its average Jbar_p, the weight V_p^0 and the material.
+    /// J_p, its average Jbar_p, the weight V_p^0 and the material
+    /// (numbers::invalid_unsigned_int for a point that has lost contact,
+    /// Material::is_disconnected(), which is left alone).
     std::vector<double>       trial_jacobian;
     std::vector<double>       average_jacobian;
     std::vector<double>       weight;

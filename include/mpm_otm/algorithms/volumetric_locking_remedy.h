@@ -14,6 +14,8 @@ namespace MpmOtm
   using namespace dealii;
 
   template <int dim>
+  class MaterialLibrary;
+  template <int dim>
   class MaterialPoints;
   template <int dim>
   class NodalSystem;
@@ -49,13 +51,14 @@ namespace MpmOtm
     parse_parameters(ParameterHandler &prm) = 0;
 
     /**
-     * Get ready for @p shape_functions and the nodal vectors of @p system,
-     * or stop with a message naming the entry if the remedy cannot work
-     * with them.
+     * Get ready for @p shape_functions, the nodal vectors of @p system and
+     * the models of @p materials, or stop with a message naming the entry
+     * if the remedy cannot work with them.
      */
     virtual void
-    initialize(const ShapeFunctions<dim> &shape_functions,
-               const NodalSystem<dim>    &system) = 0;
+    initialize(const ShapeFunctions<dim>  &shape_functions,
+               const NodalSystem<dim>     &system,
+               const MaterialLibrary<dim> &materials) = 0;
 
     /**
      * One line for the start of a run: what the remedy does.

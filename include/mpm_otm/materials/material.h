@@ -120,6 +120,15 @@ namespace MpmOtm
     is_plastic() const;
 
     /**
+     * Whether a point with these internal variables has lost contact with
+     * its neighbours: a granular point opened beyond the density at which
+     * it lost contact, without stress (false for models without such a
+     * state).
+     */
+    virtual bool
+    is_disconnected(const ArrayView<const double> &internal_variables) const;
+
+    /**
      * The friction angle phi (radians) of a frictional model, 0 otherwise;
      * a geostatic initial stress uses K0 = 1 - sin(phi) by default for
      * phi > 0 and the elastic nu / (1 - nu) otherwise.

@@ -55,6 +55,14 @@ namespace MpmOtm
     is_plastic() const override;
 
     /**
+     * Whether the point's separation (the last internal variable of a
+     * model that can_separate()) is open.
+     */
+    bool
+    is_disconnected(
+      const ArrayView<const double> &internal_variables) const override;
+
+    /**
      * The elastic predictor: @p stress advanced by the hypo-elastic rate of
      * thesis Eq. 2.4 over @p dt with the velocity gradient
      * @p velocity_gradient (both three-dimensional),
