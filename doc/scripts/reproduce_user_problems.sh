@@ -22,7 +22,7 @@ run() {
   cp "$root/prm/$1" run.prm
   printf '%s\nsubsection Output\n set Directory = run\n set Format = none\nend\n' "$2" >> run.prm
   rm -rf run
-  "$exe" run.prm > run.log
+  "$exe" run.prm > run.log 2>&1 || { tail -5 run.log >&2; return 1; }
 }
 
 # Mean uy of the points of the last point column of the cantilever (X > $1)
@@ -129,56 +129,82 @@ end"
       } | tee "$data/G2-friction-block.dat"
       ;;
     G3)
-      echo "G3: Prandtl footing, load against settlement on three grids"
-      for n in 20 40 80; do
-        h=$(awk "BEGIN{print 2.5 / $n}")
-        dt=$(awk "BEGIN{print 4e-4 * 40 / $n}")
-        run G3-prandtl-footing.prm "subsection Mesh
+      echo "G3: Prandtl footing, load against settlement, linear functions and"
+      echo "quadratic B-splines, with and without the volumetric locking remedy"
+      {
+        echo "# family remedy cells_per_half_width mean_load_0.03-0.1 (N/m) excess_over_Prandtl_25708 (%) mean_in_cell_spread_of_p/c (plastic zone)"
+        for family in linear bspline; do
+          prm=G3-prandtl-footing.prm
+          rows=0.5
+          if [ $family = bspline ]; then
+            prm=G3-prandtl-footing-bspline.prm
+            rows=1
+          fi
+          for remedy in none F-bar; do
+            for n in 20 40 80; do
+              h=$(awk "BEGIN{print 2.5 / $n}")
+              dt=$(awk "BEGIN{print 4e-4 * 40 / $n}")
+              run $prm "set Volumetric locking remedy = $remedy
+subsection Mesh
  set Subdivisions = $n, $((6 * n / 5))
 end
 subsection Time
  set Time step = $dt
+ set End time = 1.05
 end
 subsection Boundary footing
- set Box lower corner = 0, $(awk "BEGIN{print 2.5 - 0.5 * $h + 1e-6}")
- set Box upper corner = 0.5001, $(awk "BEGIN{print 2.5 + 0.5 * $h - 1e-6}")
+ set Box lower corner = 0, $(awk "BEGIN{print 2.5 - $rows * $h + 1e-6}")
+ set Box upper corner = 0.5001, $(awk "BEGIN{print 2.5 + $rows * $h - 1e-6}")
 end
 subsection Output
- set Interval = $(awk "BEGIN{print int(0.02 / $dt + 0.5)}")
+ set Interval = $(awk "BEGIN{print int(0.01 / $dt + 0.5)}")
  set Write particle CSV = true
 end"
-        {
-          echo "# settlement load_per_unit_length (half model, N/m; $n x $((6 * n / 5)) cells)"
-          awk -F, 'NR > 1 { print -$9, -$7 }' run/statistics.csv
-        } > "$data/G3-load-$n.dat"
-        plateau=$(awk 'NR > 1 && $1 >= 0.03 { s += $2; n++ } END { print s / n }' "$data/G3-load-$n.dat")
-        echo "$n cells: mean load at settlements 0.03-0.1: $plateau N/m (Prandtl 25708)"
-        if [ "$n" = 80 ]; then
-          last=$(ls run/particles-*.csv | tail -1)
-          awk -F, 'NR > 1 { printf "%.4g %.4g %.3g\n", $4, $5, $17 }' "$last" > "$data/G3-plastic-strain.dat"
-        fi
-      done | tee "$data/G3-limit-load.txt"
+              {
+                echo "# settlement load_per_unit_length (half model, N/m; $family, $remedy, $n x $((6 * n / 5)) cells)"
+                awk -F, 'NR > 1 { print -$9, -$7 }' run/statistics.csv
+              } > "$data/G3-load-$family-$remedy-$n.dat"
+              plateau=$(awk 'NR > 1 && $1 > 0.03 && $1 <= 0.1 { s += $2; n++ } END { print s / n }' \
+                "$data/G3-load-$family-$remedy-$n.dat")
+              last=$(ls run/particles-*.csv | tail -1)
+              spread=$(awk -F, -v h="$h" -f "$root/doc/scripts/cell_spread.awk" "$last")
+              echo "$family $remedy $((n / 5)) $plateau $(awk "BEGIN{printf \"%.1f\", 100 * ($plateau / 25708 - 1)}") $spread"
+              if [ "$n" = 40 ]; then
+                awk -F, 'NR > 1 { printf "%.4g %.4g %.3g\n", $4, $5, $17 }' "$last" \
+                  > "$data/G3-plastic-strain-$family-$remedy.dat"
+              fi
+            done
+          done
+        done
+      } | tee "$data/G3-limit-load.dat"
       ;;
     G4)
-      echo "G4: granular column collapse, a = 0.5, 1, 2 (20 cells across L0)"
+      echo "G4: granular column collapse, a = 0.5, 1, 2 (20 cells across L0),"
+      echo "without a volumetric locking remedy and with F-bar (the default)"
       {
-        echo "# a H0 front toe H_inf (L_front-L0)/L0 (L_toe-L0)/L0 Lube Balmforth-Kerswell (prm/G4-column-collapse.prm)"
-        for a in 0.5 1 2; do
-          H0=$(awk "BEGIN{print 0.2 * $a}")
-          run G4-column-collapse.prm "subsection Body column
+        echo "# remedy a H0 front toe H_inf (L_front-L0)/L0 (L_toe-L0)/L0 Lube Balmforth-Kerswell (prm/G4-column-collapse.prm)"
+        for remedy in none F-bar; do
+          for a in 0.5 1 2; do
+            H0=$(awk "BEGIN{print 0.2 * $a}")
+            run G4-column-collapse.prm "set Volumetric locking remedy = $remedy
+subsection Body column
  set Upper corner = 0.2, $H0
 end
 subsection Output
  set Interval = 500
 end"
-          last=$(ls run/particles-*.csv | tail -1)
-          awk -F, 'NR > 1 { printf "%.4g %.4g %.3g\n", $4, $5, $17 }' "$last" > "$data/G4-deposit-$a.dat"
-          # The front: the furthest point; the toe: the furthest x where the
-          # deposit is at least one cell (0.01) thick, in columns of 0.01.
-          awk -v a="$a" -v H0="$H0" '{ b = int($1 / 0.01); if ($2 > top[b]) top[b] = $2; if ($1 > front) front = $1; if ($2 > h) h = $2 }
-            END { for (b in top) if (top[b] >= 0.01 && (b + 1) * 0.01 > toe) toe = (b + 1) * 0.01
-                  lube = (a < 2.3) ? 1.2 * a : 1.9 * a ^ (2 / 3)
-                  printf "%s %s %.4f %.4f %.4f %.3f %.3f %.3f %.3f\n", a, H0, front, toe, h + 0.0025, (front - 0.2) / 0.2, (toe - 0.2) / 0.2, lube, a ^ 0.9 }' "$data/G4-deposit-$a.dat"
+            last=$(ls run/particles-*.csv | tail -1)
+            deposit="$data/G4-deposit-$a.dat"
+            [ $remedy = none ] && deposit="$work/deposit.dat"
+            awk -F, 'NR > 1 { printf "%.4g %.4g %.3g\n", $4, $5, $17 }' "$last" > "$deposit"
+            # The front: the furthest point; the toe: the furthest x where
+            # the deposit is at least one cell (0.01) thick, in columns of
+            # 0.01.
+            awk -v a="$a" -v H0="$H0" -v remedy="$remedy" '{ b = int($1 / 0.01); if ($2 > top[b]) top[b] = $2; if ($1 > front) front = $1; if ($2 > h) h = $2 }
+              END { for (b in top) if (top[b] >= 0.01 && (b + 1) * 0.01 > toe) toe = (b + 1) * 0.01
+                    lube = (a < 2.3) ? 1.2 * a : 1.9 * a ^ (2 / 3)
+                    printf "%s %s %s %.4f %.4f %.4f %.3f %.3f %.3f %.3f\n", remedy, a, H0, front, toe, h + 0.0025, (front - 0.2) / 0.2, (toe - 0.2) / 0.2, lube, a ^ 0.9 }' "$deposit"
+          done
         done
       } | tee "$data/G4-run-out.dat"
       {
@@ -186,7 +212,7 @@ end"
         for psi in 0 30; do
           for cells in 20 40 80; do
             dt=$(awk "BEGIN{print 1e-4 * 20 / $cells}")
-            run G4-column-collapse.prm "subsection Mesh
+            if ! run G4-column-collapse.prm "subsection Mesh
  set Upper corner = 0.3, 0.24
  set Subdivisions = $((3 * cells / 2)), $((6 * cells / 5))
 end
@@ -201,7 +227,10 @@ subsection Time
 end
 subsection Output
  set Interval = $(awk "BEGIN{print int(0.05 / $dt + 0.5)}")
-end"
+end"; then
+              echo "$psi $cells unstable: $(grep -o 'Stopped in time step [0-9]* (t = [0-9.e-]*' run.log)"
+              continue
+            fi
             last=$(ls run/particles-*.csv | tail -1)
             angles=""
             for fraction in 0.5 0.2 0.1; do

@@ -28,27 +28,38 @@ plot "data/G2-centre-30-0.3.dat" using 1:2 with points pt 7 title "mpm-otm, thet
      "data/G2-centre-10-0.3.dat" using 1:2 with points pt 9 title "mpm-otm, theta = 10, mu = 0.3 (at rest)"
 
 set output "figures/G3-load-displacement.png"
-set title "G3: smooth strip footing on a Tresca soil (half model)"
+set title "G3: smooth strip footing on a Tresca soil (half model), 2 x 2 points per cell"
 set xlabel "settlement (m)"
 set ylabel "load per unit length (kN/m)"
 set key bottom right
-plot "data/G3-load-20.dat" using 1:($2 / 1e3) with lines lw 2 title "mpm-otm, 20 x 24 cells", \
-     "data/G3-load-40.dat" using 1:($2 / 1e3) with lines lw 2 title "mpm-otm, 40 x 48 cells", \
-     "data/G3-load-80.dat" using 1:($2 / 1e3) with lines lw 2 title "mpm-otm, 80 x 96 cells", \
-     25.708 with lines lc rgb "black" dt 2 title "Prandtl (2 + pi) c B / 2 = 25.71 kN/m"
+set yrange [0:36]
+plot "data/G3-load-linear-none-40.dat" using 1:($2 / 1e3) with lines lw 1 lc rgb "#e41a1c" dt 2 title "linear, no remedy, 8 cells per half-width", \
+     "data/G3-load-linear-F-bar-40.dat" using 1:($2 / 1e3) with lines lw 2 lc rgb "#e41a1c" title "linear, F-bar, 8 cells", \
+     "data/G3-load-linear-F-bar-80.dat" using 1:($2 / 1e3) with lines lw 2 lc rgb "#ff7f00" title "linear, F-bar, 16 cells", \
+     "data/G3-load-bspline-none-40.dat" using 1:($2 / 1e3) with lines lw 1 lc rgb "#377eb8" dt 2 title "B-splines p = 2, no remedy, 8 cells", \
+     "data/G3-load-bspline-F-bar-40.dat" using 1:($2 / 1e3) with lines lw 2 lc rgb "#377eb8" title "B-splines p = 2, F-bar, 8 cells", \
+     "data/G3-load-bspline-F-bar-80.dat" using 1:($2 / 1e3) with lines lw 2 lc rgb "#4daf4a" title "B-splines p = 2, F-bar, 16 cells", \
+     25.708 with lines lc rgb "black" dt 3 lw 2 title "Prandtl (2 + pi) c B / 2 = 25.71 kN/m"
+set autoscale
 
 set output "figures/G3-plastic-strain.png"
-set title "G3: equivalent plastic strain at a settlement of 0.1 (80 x 96 cells)"
+set terminal pngcairo size 800,860 font ",11"
 set xlabel "x (m)"
 set ylabel "y (m)"
 set size ratio -1
 set xrange [0:2.5]
-set yrange [0.8:2.6]
+set yrange [1.2:2.6]
 set cblabel "equivalent plastic strain"
 set cbrange [0:0.2]
 set palette rgbformulae 33,13,10
 unset key
-plot "data/G3-plastic-strain.dat" using 1:2:3 with points pt 5 ps 0.25 palette
+set multiplot layout 2,1 title "G3: equivalent plastic strain at a settlement of 0.1, linear functions, 8 cells per half-width"
+set title "no remedy (locked)"
+plot "data/G3-plastic-strain-linear-none.dat" using 1:2:3 with points pt 5 ps 0.35 palette
+set title "F-bar"
+plot "data/G3-plastic-strain-linear-F-bar.dat" using 1:2:3 with points pt 5 ps 0.35 palette
+unset multiplot
+set terminal pngcairo size 800,560 font ",11"
 unset size
 set autoscale
 unset cbrange
