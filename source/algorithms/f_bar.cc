@@ -63,7 +63,12 @@ namespace MpmOtm
                         const NodalSystem<dim> &,
                         const MaterialLibrary<dim> &materials)
   {
-    this->materials = &materials;
+    models.clear();
+    for (unsigned int id = 0; id < materials.n_materials(); ++id)
+      models.push_back({&materials[id],
+                        materials.first_internal_variable(id),
+                        materials.n_internal_variables(id),
+                        materials[id].can_lose_contact()});
     AssertThrow(!shape_functions.gradients_constant_on_cells(),
                 ExcMessage(
                   "Volumetric locking remedy = F-bar: the gradients of "
@@ -91,10 +96,10 @@ namespace MpmOtm
 
   template <int dim>
   void
-  FBar<dim>::correct(const MaterialPoints<dim> &material_points,
-                     const ParticleShapeData<dim> &,
-                     const double                 dt,
-                     std::vector<Tensor<2, dim>> &velocity_gradients)
+  FBar<dim>::correct(MaterialPoints<dim>          &material_points,
+                     const ParticleShapeData<dim> &shape_data,
+                     const double                  dt,
+                     std::vector<Tensor<2, dim>>  &velocity_gradients)
   {
     using Layout            = PropertyLayout<dim>;
     const unsigned int n    = velocity_gradients.size();
@@ -102,23 +107,38 @@ namespace MpmOtm
     trial_jacobian.resize(n);
     average_jacobian.resize(n);
     groups.clear();
+    groups.reserve(shape_data.n_batches());
     positions.resize(n);
+    stress_views.resize(n);
+    pressure.resize(n);
     weight.resize(n);
     material.resize(n);
 
-    unsigned int                                      p     = 0;
-    unsigned int                                      first = 0;
-    typename Triangulation<dim>::active_cell_iterator group_cell;
-    for (const auto &particle : material_points.particle_handler())
+    // The points of a cell are a batch of the shape data (the families
+    // start a batch per cell), which saves asking every point for its cell.
+    unsigned int p     = 0;
+    unsigned int batch = 0;
+#ifdef DEBUG
+    typename Triangulation<dim>::active_cell_iterator batch_cell;
+#endif
+    for (auto &particle : material_points.particle_handler())
       {
-        const auto cell = particle.get_surrounding_cell();
-        if (p == 0 || cell != group_cell)
+        if (batch < shape_data.n_batches() &&
+            p == shape_data.first_particle(batch))
           {
-            average_group(first, p);
-            first      = p;
-            group_cell = cell;
+            if (batch > 0)
+              average_group(shape_data.first_particle(batch - 1), p);
+            ++batch;
+#ifdef DEBUG
+            batch_cell = particle.get_surrounding_cell();
+#endif
           }
+#ifdef DEBUG
+        Assert(particle.get_surrounding_cell() == batch_cell,
+               ExcMessage("A batch of shape data spans two cells."));
+#endif
         const auto properties = particle.get_properties();
+        stress_views[p]       = properties.data();
         trial_jacobian[p] =
           determinant(Layout::get_deformation_gradient(properties)) *
           determinant(unit + dt * velocity_gradients[p]);
@@ -129,18 +149,20 @@ namespace MpmOtm
         // a dilated, stress-free point with that of its dense neighbours
         // would swell them, and their forces V_p sigma_p grad phi_i with
         // them.
-        const unsigned int id = Layout::get_material_id(properties);
+        const unsigned int id    = Layout::get_material_id(properties);
+        const auto        &model = models[id];
         material[p] =
-          (*materials)[id].is_disconnected(
-            ArrayView<const double>(properties.data() +
-                                      materials->first_internal_variable(id),
-                                    materials->n_internal_variables(id))) ?
+          (model.may_lose_contact &&
+           model.material->is_disconnected(
+             ArrayView<const double>(properties.data() + model.first_variable,
+                                     model.n_variables))) ?
             numbers::invalid_unsigned_int :
             id;
         ++p;
       }
+    if (batch > 0)
+      average_group(shape_data.first_particle(batch - 1), n);
     AssertDimension(p, n);
-    average_group(first, n);
 
     // dFbar = (Jbar / J)^(1/dim) (I + dt L), Lbar = (dFbar - I) / dt. A point
     // whose Jacobian is not positive is left alone: the time step stops on
@@ -149,8 +171,10 @@ namespace MpmOtm
       if (trial_jacobian[q] > 0. && average_jacobian[q] > 0. &&
           average_jacobian[q] != trial_jacobian[q])
         {
-          const double factor =
-            std::pow(average_jacobian[q] / trial_jacobian[q], 1. / dim);
+          const double ratio  = average_jacobian[q] / trial_jacobian[q];
+          const double factor = (dim == 2) ? std::sqrt(ratio) :
+                                (dim == 3) ? std::cbrt(ratio) :
+                                             ratio;
           velocity_gradients[q] =
             (factor * (unit + dt * velocity_gradients[q]) - unit) / dt;
         }
@@ -162,9 +186,26 @@ namespace MpmOtm
   void
   FBar<dim>::average_group(const unsigned int first, const unsigned int end)
   {
-    // Usually all points of a cell are of one material; otherwise each
-    // material is averaged on its own, so that a stiff body does not take
-    // the volume change of the soil beside it.
+    // Usually all points of a cell are of one material and in contact.
+    bool uniform = material[first] != numbers::invalid_unsigned_int;
+    for (unsigned int q = first + 1; q < end && uniform; ++q)
+      uniform = (material[q] == material[first]);
+    if (uniform)
+      {
+        double weighted = 0., total = 0.;
+        for (unsigned int q = first; q < end; ++q)
+          {
+            weighted += weight[q] * trial_jacobian[q];
+            total += weight[q];
+          }
+        std::fill(average_jacobian.begin() + first,
+                  average_jacobian.begin() + end,
+                  weighted / total);
+        groups.emplace_back(first, end);
+        return;
+      }
+    // Otherwise each material is averaged on its own, so that a stiff body
+    // does not take the volume change of the soil beside it.
     for (unsigned int start = first; start < end; ++start)
       {
         if (material[start] == numbers::invalid_unsigned_int)
@@ -196,14 +237,10 @@ namespace MpmOtm
 
   template <int dim>
   void
-  FBar<dim>::after_stress_update(MaterialPoints<dim> &material_points)
+  FBar<dim>::after_stress_update(MaterialPoints<dim> &)
   {
     using Layout = PropertyLayout<dim>;
-    // The stresses of the points in the order of the particle handler.
-    stress_views.clear();
-    for (auto &particle : material_points.particle_handler())
-      stress_views.push_back(particle.get_properties().data());
-    AssertDimension(stress_views.size(), material.size());
+    // The property arrays of correct() hold the updated stresses.
     for (const auto &[first, end] : groups)
       {
         if (end - first < 2)
@@ -211,29 +248,29 @@ namespace MpmOtm
         const unsigned int id = material[first];
         // Weighted least squares p = a + b . (x - x_c) over the group's
         // points, x_c their centroid: a is the mean, b the gradient (zero if
-        // the points do not span the cell).
-        double     total = 0., a = 0.;
-        Point<dim> centre;
+        // the points do not span the cell). One pass for the sums of w,
+        // w x, w x x^T, w p and w p x, relative to the group's first point.
+        const Point<dim>        origin = positions[first];
+        double                  total = 0., a = 0.;
+        Tensor<1, dim>          centre, weighted_pressure;
+        SymmetricTensor<2, dim> moments;
         for (unsigned int q = first; q < end; ++q)
           if (material[q] == id)
             {
-              const double p = mean_stress<dim>(stress_views[q]);
-              total += weight[q];
-              a += weight[q] * p;
-              centre += weight[q] * positions[q];
+              const double         w = weight[q];
+              const Tensor<1, dim> x = positions[q] - origin;
+              pressure[q]            = mean_stress<dim>(stress_views[q]);
+              total += w;
+              a += w * pressure[q];
+              centre += w * x;
+              weighted_pressure += (w * pressure[q]) * x;
+              moments += w * symmetrize(outer_product(x, x));
             }
         a /= total;
         centre /= total;
-        SymmetricTensor<2, dim> moments;
-        Tensor<1, dim>          right_hand_side;
-        for (unsigned int q = first; q < end; ++q)
-          if (material[q] == id)
-            {
-              const Tensor<1, dim> d = positions[q] - centre;
-              moments += weight[q] * symmetrize(outer_product(d, d));
-              right_hand_side +=
-                weight[q] * (mean_stress<dim>(stress_views[q]) - a) * d;
-            }
+        moments -= total * symmetrize(outer_product(centre, centre));
+        const Tensor<1, dim> right_hand_side =
+          weighted_pressure - (total * a) * centre;
         Tensor<1, dim> gradient;
         const double   scale = trace(moments);
         if (scale > 0. && determinant(moments) >
@@ -243,8 +280,8 @@ namespace MpmOtm
           if (material[q] == id)
             {
               double *const properties = stress_views[q];
-              const double  change = a + gradient * (positions[q] - centre) -
-                                    mean_stress<dim>(properties);
+              const double  change =
+                a + gradient * (positions[q] - origin - centre) - pressure[q];
               for (unsigned int d = 0; d < dim; ++d)
                 properties[Layout::stress +
                            SymmetricTensor<2, dim>::component_to_unrolled_index(

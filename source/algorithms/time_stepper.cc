@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <limits>
 
 namespace MpmOtm
@@ -154,6 +155,32 @@ namespace MpmOtm
 
 
   template <int dim>
+  inline bool
+  TimeStepper<dim>::update_deformation_and_stress(
+    const ArrayView<double> &properties,
+    const Tensor<2, dim>    &velocity_gradient,
+    const double             dt) const
+  {
+    using Layout     = PropertyLayout<dim>;
+    Tensor<2, dim> F = Layout::get_deformation_gradient(properties);
+    F = (unit_symmetric_tensor<dim>() + dt * velocity_gradient) * F;
+    Layout::set_deformation_gradient(properties, F);
+
+    const unsigned int id    = Layout::get_material_id(properties);
+    StressState<dim>   state = materials.stress_state(id, properties);
+    materials[id].update_stress(F, velocity_gradient, dt, state);
+    materials.store(state, properties);
+
+    const double check =
+      state.stress.norm() +
+      Layout::get_vector(properties, Layout::velocity).norm() +
+      Layout::volume(properties);
+    return std::isfinite(check) && determinant(F) > 0.;
+  }
+
+
+
+  template <int dim>
   void
   TimeStepper<dim>::update_particles(
     const double                                      dt,
@@ -179,11 +206,10 @@ namespace MpmOtm
     // at once; with one, after it has changed all points' gradients.
     types::particle_index bad_point = numbers::invalid_unsigned_int;
     Point<dim>            bad_location;
-    const auto            update_state = [&](auto                 &particle,
-                                  const Tensor<2, dim> &velocity_gradient) {
-      if (!update_deformation_and_stress(particle.get_properties(),
-                                         velocity_gradient,
-                                         dt) &&
+    const auto            update_state = [&](const auto              &particle,
+                                  const ArrayView<double> &properties,
+                                  const Tensor<2, dim>    &velocity_gradient) {
+      if (!update_deformation_and_stress(properties, velocity_gradient, dt) &&
           bad_point == numbers::invalid_unsigned_int)
         {
           bad_point    = particle.get_id();
@@ -191,6 +217,7 @@ namespace MpmOtm
         }
     };
     velocity_gradients.resize(locking_remedy ? data.n_particles() : 0);
+    point_properties.resize(velocity_gradients.size());
     {
       // The nodal velocities and accelerations of a batch's functions,
       // gathered once for the points of the batch.
@@ -245,18 +272,35 @@ namespace MpmOtm
             Layout::set_vector(properties, Layout::velocity, point_velocity);
           particle.set_location(particle.get_location() + dt * point_velocity);
           if (locking_remedy)
-            velocity_gradients[p++] = velocity_gradient;
+            {
+              velocity_gradients[p] = velocity_gradient;
+              point_properties[p++] = properties;
+            }
           else
-            update_state(particle, velocity_gradient);
+            update_state(particle, properties, velocity_gradient);
         }
     }
 
     if (locking_remedy)
       {
         locking_remedy->correct(material_points, data, dt, velocity_gradients);
-        unsigned int p = 0;
-        for (auto &particle : material_points.particle_handler())
-          update_state(particle, velocity_gradients[p++]);
+        // The points' property arrays of the first pass, so that the
+        // particle handler is not walked again; a failing point is found
+        // by its number.
+        unsigned int bad_number = numbers::invalid_unsigned_int;
+        for (unsigned int p = 0; p < point_properties.size(); ++p)
+          if (!update_deformation_and_stress(point_properties[p],
+                                             velocity_gradients[p],
+                                             dt) &&
+              bad_number == numbers::invalid_unsigned_int)
+            bad_number = p;
+        if (bad_number != numbers::invalid_unsigned_int)
+          {
+            auto particle = material_points.particle_handler().begin();
+            std::advance(particle, bad_number);
+            bad_point    = particle->get_id();
+            bad_location = particle->get_location();
+          }
         locking_remedy->after_stress_update(material_points);
       }
 
@@ -273,32 +317,6 @@ namespace MpmOtm
                             problem,
                             "The computation became unstable: ",
                             EnergyMonitor<dim>::advice());
-  }
-
-
-
-  template <int dim>
-  bool
-  TimeStepper<dim>::update_deformation_and_stress(
-    const ArrayView<double> &properties,
-    const Tensor<2, dim>    &velocity_gradient,
-    const double             dt) const
-  {
-    using Layout     = PropertyLayout<dim>;
-    Tensor<2, dim> F = Layout::get_deformation_gradient(properties);
-    F = (unit_symmetric_tensor<dim>() + dt * velocity_gradient) * F;
-    Layout::set_deformation_gradient(properties, F);
-
-    const unsigned int id    = Layout::get_material_id(properties);
-    StressState<dim>   state = materials.stress_state(id, properties);
-    materials[id].update_stress(F, velocity_gradient, dt, state);
-    materials.store(state, properties);
-
-    const double check =
-      state.stress.norm() +
-      Layout::get_vector(properties, Layout::velocity).norm() +
-      Layout::volume(properties);
-    return std::isfinite(check) && determinant(F) > 0.;
   }
 
 

@@ -112,6 +112,15 @@ namespace MpmOtm
 
 
   template <int dim>
+  bool
+  Material<dim>::can_lose_contact() const
+  {
+    return false;
+  }
+
+
+
+  template <int dim>
   double
   Material<dim>::friction_angle() const
   {

@@ -259,6 +259,15 @@ namespace MpmOtm
 
   template <int dim>
   bool
+  PlasticMaterial<dim>::can_lose_contact() const
+  {
+    return can_separate();
+  }
+
+
+
+  template <int dim>
+  bool
   PlasticMaterial<dim>::is_disconnected(
     const ArrayView<const double> &internal_variables) const
   {

@@ -65,6 +65,9 @@ namespace MpmOtm
    * quadrilaterals; manual, "Volumetric locking".)
    */
   template <int dim>
+  class Material;
+
+  template <int dim>
   class FBar : public VolumetricLockingRemedy<dim>
   {
   public:
@@ -86,7 +89,7 @@ namespace MpmOtm
     description() const override;
 
     void
-    correct(const MaterialPoints<dim>    &material_points,
+    correct(MaterialPoints<dim>          &material_points,
             const ParticleShapeData<dim> &shape_data,
             const double                  dt,
             std::vector<Tensor<2, dim>>  &velocity_gradients) override;
@@ -99,8 +102,20 @@ namespace MpmOtm
     after_stress_update(MaterialPoints<dim> &material_points) override;
 
   private:
-    /// The materials of the run (which points have lost contact).
-    const MaterialLibrary<dim> *materials = nullptr;
+    /**
+     * What correct() needs of a material: the model, where its internal
+     * variables are, and whether its points can lose contact.
+     */
+    struct Model
+    {
+      const Material<dim> *material;
+      unsigned int         first_variable;
+      unsigned int         n_variables;
+      bool                 may_lose_contact;
+    };
+
+    /// The materials of the run, by number.
+    std::vector<Model> models;
 
     /**
      * Set the average Jacobians of the points [first, end) (of one cell):
@@ -123,8 +138,11 @@ namespace MpmOtm
     std::vector<unsigned int> material;
     /// The position of each point at the start of the step.
     std::vector<Point<dim>> positions;
-    /// The property arrays of the points, for after_stress_update().
+    /// The property arrays of the points, taken in correct() for
+    /// after_stress_update() (the particle handler is not walked again).
     std::vector<double *> stress_views;
+    /// The mean stress of each point after the stress update.
+    std::vector<double> pressure;
   };
 } // namespace MpmOtm
 

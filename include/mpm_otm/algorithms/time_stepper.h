@@ -142,9 +142,11 @@ namespace MpmOtm
     VolumetricLockingRemedy<dim> *locking_remedy;
     TimerOutput                  &timer;
     ParticleShapeData<dim>        data;
-    /// With a volumetric locking remedy: the velocity gradient of each
-    /// point in this step, in the order of the particle handler.
-    std::vector<Tensor<2, dim>> velocity_gradients;
+    /// With a volumetric locking remedy: the velocity gradient and the
+    /// property array of each point in this step, in the order of the
+    /// particle handler.
+    std::vector<Tensor<2, dim>>    velocity_gradients;
+    std::vector<ArrayView<double>> point_properties;
 
     /**
      * The constraints of the acceleration solves: the system's, with the

@@ -74,7 +74,7 @@ namespace MpmOtm
      * without points.
      */
     virtual void
-    correct(const MaterialPoints<dim>    &material_points,
+    correct(MaterialPoints<dim>          &material_points,
             const ParticleShapeData<dim> &shape_data,
             const double                  dt,
             std::vector<Tensor<2, dim>>  &velocity_gradients) = 0;

@@ -129,6 +129,13 @@ namespace MpmOtm
     is_disconnected(const ArrayView<const double> &internal_variables) const;
 
     /**
+     * Whether the model's points can lose contact at all (is_disconnected()
+     * is false for every state otherwise). False by default.
+     */
+    virtual bool
+    can_lose_contact() const;
+
+    /**
      * The friction angle phi (radians) of a frictional model, 0 otherwise;
      * a geostatic initial stress uses K0 = 1 - sin(phi) by default for
      * phi > 0 and the elastic nu / (1 - nu) otherwise.

@@ -63,6 +63,12 @@ namespace MpmOtm
       const ArrayView<const double> &internal_variables) const override;
 
     /**
+     * can_separate().
+     */
+    bool
+    can_lose_contact() const override;
+
+    /**
      * The elastic predictor: @p stress advanced by the hypo-elastic rate of
      * thesis Eq. 2.4 over @p dt with the velocity gradient
      * @p velocity_gradient (both three-dimensional),
