@@ -166,7 +166,10 @@ end
                      run.simulator->nodal_system(),
                      run.simulator->material_library());
     run.corrected = run.original;
-    f_bar.correct(points, run.data, dt, run.corrected);
+    f_bar.correct(const_cast<MaterialPoints<2> &>(points),
+                  run.data,
+                  dt,
+                  run.corrected);
 
     // Stresses with a mean and a deviator that vary from point to point
     // (written into the points as the models would).
