@@ -369,6 +369,20 @@ namespace MpmOtm
 
   template <int dim>
   double
+  NodalSystem<dim>::kinetic_energy() const
+  {
+    double energy = 0;
+    for (unsigned int i = 0; i < lumped_mass.locally_owned_size(); ++i)
+      for (unsigned int c = 0; c < dim; ++c)
+        energy += 0.5 * lumped_mass.local_element(i) *
+                  velocity[c].local_element(i) * velocity[c].local_element(i);
+    return Utilities::MPI::sum(energy, lumped_mass.get_mpi_communicator());
+  }
+
+
+
+  template <int dim>
+  double
   NodalSystem<dim>::external_work(const double dt) const
   {
     return dt * external_power + 0.5 * dt * dt * external_force_squared_by_mass;

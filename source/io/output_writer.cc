@@ -187,7 +187,7 @@ namespace MpmOtm
           for (const std::string quantity : {"force", "displacement"})
             for (unsigned int d = 0; d < dim; ++d)
               statistics << ',' << name << '_' << quantity << '_' << "xyz"[d];
-        statistics << ",supplied_work\n";
+        statistics << ",supplied_work,grid_kinetic_energy\n";
         statistics.close();
         if (!statistics)
           problem = "Could not write <" + name +
@@ -431,7 +431,8 @@ namespace MpmOtm
         for (unsigned int d = 0; d < dim; ++d)
           file << ',' << displacement[d];
       }
-    file << ',' << statistics.supplied_work << '\n';
+    file << ',' << statistics.supplied_work << ','
+         << statistics.grid_kinetic_energy << '\n';
     file.close();
     return file ? std::string() :
                   "Could not write <" + name +

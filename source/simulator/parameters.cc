@@ -3,6 +3,7 @@
 
 
 #include <mpm_otm/algorithms/method.h>
+#include <mpm_otm/algorithms/quasi_static_end.h>
 #include <mpm_otm/algorithms/volumetric_locking_remedy.h>
 #include <mpm_otm/base/plugins.h>
 #include <mpm_otm/boundary_conditions/boundary_conditions.h>
@@ -161,6 +162,7 @@ namespace MpmOtm
     Checkpoint<dim>::declare_parameters(prm);
     BoundaryConditions<dim>::declare_parameters(prm, names.boundaries);
     LocalDamping<dim>::declare_parameters(prm);
+    QuasiStaticEnd<dim>::declare_parameters(prm);
 
     PluginRegistry<Problem<dim>>::declare_parameters(prm);
     PluginRegistry<NodalUpdate<dim>>::declare_parameters(prm);
@@ -258,6 +260,8 @@ namespace MpmOtm
                            "components there)."));
     damping = std::make_unique<LocalDamping<dim>>();
     damping->parse_parameters(prm);
+    quasi_static_end = std::make_unique<QuasiStaticEnd<dim>>();
+    quasi_static_end->parse_parameters(prm);
   }
 
 

@@ -6,6 +6,7 @@
 #include <mpm_otm/algorithms/energy_monitor.h>
 #include <mpm_otm/algorithms/grid_motion.h>
 #include <mpm_otm/algorithms/nodal_update.h>
+#include <mpm_otm/algorithms/quasi_static_end.h>
 #include <mpm_otm/algorithms/stable_time_step.h>
 #include <mpm_otm/algorithms/time_stepper.h>
 #include <mpm_otm/algorithms/volumetric_locking_remedy.h>
@@ -88,7 +89,8 @@ namespace MpmOtm
                            current_time);
         statistics.supplied_work =
           Utilities::MPI::sum(stepper.supplied_work(), communicator);
-        statistics.boundary_names = boundary_conditions->names();
+        statistics.grid_kinetic_energy = system->kinetic_energy();
+        statistics.boundary_names      = boundary_conditions->names();
         statistics.boundary_reactions =
           boundary_conditions->reactions_and_displacements();
         output->write(step,
@@ -130,6 +132,7 @@ namespace MpmOtm
         {
           stepper.load(*resumed_state);
           energy_monitor.load(*resumed_state);
+          quasi_static_end->load(*resumed_state);
           resumed_state.reset();
         }
       else
@@ -137,6 +140,7 @@ namespace MpmOtm
           energy_monitor.check(*points, *materials, stepper.supplied_work());
           report(0);
         }
+      unsigned int at_rest_step = numbers::invalid_unsigned_int;
       for (unsigned int step = resumed_step + 1; step <= n_steps; ++step)
         {
           const double dt = std::min(time_step, end_time - current_time);
@@ -153,6 +157,13 @@ namespace MpmOtm
                                        *materials,
                                        stepper.supplied_work());
                   signal = stop_signal.received(communicator);
+                  if (quasi_static_end->enabled() &&
+                      quasi_static_end->check(
+                        *system,
+                        current_time + dt,
+                        Utilities::MPI::sum(stepper.supplied_work(),
+                                            communicator)))
+                    at_rest_step = step;
                 }
             }
           catch (const std::exception &error)
@@ -167,8 +178,14 @@ namespace MpmOtm
               break;
             }
           current_time = (step == n_steps) ? end_time : current_time + dt;
-          if (output_step || !signal.empty())
+          if (output_step || !signal.empty() || at_rest_step == step)
             report(step);
+          if (at_rest_step == step)
+            {
+              pcout << "Quasi-static end: " << quasi_static_end->summary()
+                    << "; the run ends here." << std::endl;
+              break;
+            }
           if (step < n_steps &&
               (!signal.empty() || checkpoint->is_due(step, communicator)))
             {
@@ -191,6 +208,10 @@ namespace MpmOtm
               break;
             }
         }
+      if (quasi_static_end->enabled() && stop_message.empty() &&
+          stopped_by.empty() && at_rest_step == numbers::invalid_unsigned_int)
+        pcout << "Quasi-static end: " << quasi_static_end->summary() << '.'
+              << std::endl;
     }
     if (!stopped_by.empty())
       throw StoppedBySignal(stop_message, stopped_by);
@@ -209,6 +230,7 @@ namespace MpmOtm
     CheckpointState state;
     stepper.save(state);
     energy_monitor.save(state);
+    quasi_static_end->save(state);
     grid_motion->save(state);
     shape_functions->save(state);
     system->save(state);
@@ -274,6 +296,15 @@ namespace MpmOtm
   Simulator<dim>::problem() const
   {
     return *problem_description;
+  }
+
+
+
+  template <int dim>
+  bool
+  Simulator<dim>::at_rest() const
+  {
+    return quasi_static_end->at_rest();
   }
 
 

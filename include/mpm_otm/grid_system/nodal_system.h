@@ -149,6 +149,17 @@ namespace MpmOtm
     external_work(const double dt) const;
 
     /**
+     * The kinetic energy of the grid's motion at the end of the step,
+     * sum_i m_i |v_i|^2 / 2 with the lumped masses m_i and the velocities
+     * v_i^{s+1} of all ranks: the motion the points are moved with. Unlike
+     * the points' kinetic energy it holds nothing of particle velocities
+     * that project to zero on the grid (the null space of the
+     * particle-to-grid map). Collective.
+     */
+    double
+    kinetic_energy() const;
+
+    /**
      * Add @p power to the power of the external forces of this step (for
      * loads assembled directly on the grid).
      */

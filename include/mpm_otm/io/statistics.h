@@ -44,6 +44,10 @@ namespace MpmOtm
     /// step's work on all ranks, TimeStepper::supplied_work()); with the
     /// energy at the start, the bound of the EnergyMonitor.
     double supplied_work = 0;
+    /// Kinetic energy of the grid's motion, sum_i m_i |v_i|^2 / 2
+    /// (NodalSystem::kinetic_energy(); the measure of the quasi-static
+    /// end), set by the simulator.
+    double grid_kinetic_energy = 0;
     /// Names of the named boundary conditions.
     std::vector<std::string> boundary_names;
     /// Their reactions (mean over the steps since the last output) and the

@@ -50,6 +50,8 @@ namespace MpmOtm
   class EnergyMonitor;
   template <int dim>
   class VolumetricLockingRemedy;
+  template <int dim>
+  class QuasiStaticEnd;
   class CheckpointState;
 
   /**
@@ -154,6 +156,13 @@ namespace MpmOtm
     time() const;
 
     /**
+     * Whether the run ended at rest by its quasi-static end (subsection
+     * "Quasi-static end"; false if that is off).
+     */
+    bool
+    at_rest() const;
+
+    /**
      * The time step of the run (Time step, or with Time step = auto the
      * Courant factor times the stable one); set by setup().
      */
@@ -206,6 +215,8 @@ namespace MpmOtm
     std::unique_ptr<BoundaryConditions<dim>> boundary_conditions;
     std::unique_ptr<LocalDamping<dim>>       damping;
     std::unique_ptr<Checkpoint<dim>>         checkpoint;
+    /// Subsection "Quasi-static end".
+    std::unique_ptr<QuasiStaticEnd<dim>> quasi_static_end;
     /// Volumetric locking remedy = automatic: the remedy is dropped where
     /// the shape functions leave it nothing to do.
     bool automatic_locking_remedy = false;
