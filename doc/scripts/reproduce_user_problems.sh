@@ -4,14 +4,15 @@
 # doc/data/G*.dat and draw doc/figures/G*.png with gnuplot (Debian package
 # gnuplot-nox; doc/scripts/user_problems.gp).
 #
-# Usage: doc/scripts/reproduce_user_problems.sh [path to mpm-otm] [G1 G2 G3 G4]
-# (default: build-release/mpm-otm, made by ./scripts/setup.sh run; all four)
+# Usage: doc/scripts/reproduce_user_problems.sh [path to mpm-otm] [G1 G2 G3 G4 G5]
+# (default: build-release/mpm-otm, made by ./scripts/setup.sh run; all five;
+# G5 needs python3-numpy for Bishop's method)
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
 exe=${1:-$root/build-release/mpm-otm}
 exe=$(cd "$(dirname "$exe")" && pwd)/$(basename "$exe")
 shift || true
-benchmarks=${*:-G1 G2 G3 G4}
+benchmarks=${*:-G1 G2 G3 G4 G5}
 data=$root/doc/data
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
@@ -244,6 +245,55 @@ end"; then
           done
         done
       } | tee "$data/G4-failure-angle.dat"
+      ;;
+    G5)
+      echo "G5: slope, critical cohesion with phi = 30 deg held, against Bishop"
+      /usr/bin/python3 "$root/doc/scripts/bishop_slope.py" factor 10e3 30 |
+        sed 's/^/Bishop, c = 10 kPa: /' | tee "$data/G5-bishop.txt"
+      /usr/bin/python3 "$root/doc/scripts/bishop_slope.py" critical-cohesion 30 |
+        sed 's/^/Bishop, phi = 30 deg: /' | tee -a "$data/G5-bishop.txt"
+      # slope H REMEDY C: run the slope on cells of size H with cohesion C;
+      # prints "rest" or "moving" and the largest displacement.
+      slope() {
+        run G5-slope.prm "set Volumetric locking remedy = $2
+subsection Mesh
+ set Subdivisions = $(awk "BEGIN{print int(45 / $1 + 0.5)}"), $(awk "BEGIN{print int(16 / $1 + 0.5)}")
+end
+subsection Material
+ subsection Mohr-Coulomb
+  set Cohesion = $3
+ end
+end
+subsection Output
+ set Time interval = 15
+ set Write particle CSV = true
+end"
+        local last state
+        last=$(ls run/particles-*.csv | tail -1)
+        state=moving
+        grep -q "at rest at t" run.log && state=rest
+        echo "$state $(awk -F, 'NR > 1 { u = sqrt($6 * $6 + $7 * $7); if (u > m) m = u } END { printf "%.3f", m }' "$last")"
+      }
+      {
+        echo "# cells remedy c=0_state c=0_largest_displacement critical_cohesion_low critical_cohesion_high (Pa; the slope moves at low, rests at high)"
+        for h in 1 0.5 0.25; do
+          for remedy in none F-bar; do
+            read -r state0 u0 < <(slope $h $remedy 0)
+            low=0
+            high=3000
+            for _ in 1 2 3 4 5 6; do
+              c=$(awk "BEGIN{print ($low + $high) / 2}")
+              read -r state u < <(slope $h $remedy "$c")
+              if [ "$state" = rest ]; then high=$c; else low=$c; fi
+              if [ "$h" = 0.25 ] && [ $remedy = F-bar ] && [ "$state" = moving ]; then
+                awk -F, 'NR > 1 { printf "%.4g %.4g %.3g\n", $4, $5, $17 }' \
+                  "$(ls run/particles-*.csv | tail -1)" > "$data/G5-plastic-strain.dat"
+              fi
+            done
+            echo "$h $remedy $state0 $u0 $low $high"
+          done
+        done
+      } | tee "$data/G5-critical-cohesion.dat"
       ;;
   esac
 done
