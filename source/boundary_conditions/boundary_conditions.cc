@@ -312,8 +312,8 @@ namespace MpmOtm
   {
     IndexSet owned = functions->locally_owned_functions();
     owned.compress();
-    Point<dim>     lower = condition.box.get_boundary_points().first;
-    Point<dim>     upper = condition.box.get_boundary_points().second;
+    Point<dim> lower = condition.box.get_boundary_points().first;
+    Point<dim> upper = condition.box.get_boundary_points().second;
     lower += condition.displacement;
     upper += condition.displacement;
     const BoundingBox<dim>               box(std::make_pair(lower, upper));
@@ -613,8 +613,9 @@ namespace MpmOtm
         Tensor<1, dim> reaction;
         for (const unsigned int i : condition.functions)
           for (unsigned int c = 0; c < dim; ++c)
-            reaction[c] +=
-              inertia[c].local_element(i) - system.force[c].local_element(i);
+            reaction[c] += inertia[c].local_element(i) -
+                           (system.force[c].local_element(i) -
+                            system.damping_force[c].local_element(i));
         condition.reaction_sum += reaction;
         if (condition.type == Type::velocity)
           {

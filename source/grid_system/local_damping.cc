@@ -63,7 +63,12 @@ namespace MpmOtm
           const double momentum = system.momentum[c].local_element(i);
           double      &force    = system.force[c].local_element(i);
           if (momentum != 0.)
-            force -= coefficient * std::abs(force) * (momentum > 0. ? 1. : -1.);
+            {
+              const double damping_force =
+                -coefficient * std::abs(force) * (momentum > 0. ? 1. : -1.);
+              force += damping_force;
+              system.damping_force[c].local_element(i) = damping_force;
+            }
         }
   }
 

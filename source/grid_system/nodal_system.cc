@@ -35,6 +35,7 @@ namespace MpmOtm
       {
         momentum[c].reinit(index_partition);
         force[c].reinit(index_partition);
+        damping_force[c].reinit(index_partition);
         acceleration[c].reinit(index_partition);
         velocity[c].reinit(index_partition);
         fixed[c].clear();
@@ -89,8 +90,9 @@ namespace MpmOtm
     lumped_mass  = 0.;
     for (unsigned int c = 0; c < dim; ++c)
       {
-        momentum[c] = 0.;
-        force[c]    = 0.;
+        momentum[c]      = 0.;
+        force[c]         = 0.;
+        damping_force[c] = 0.;
       }
     particle_mass.resize(shape_data.n_particles());
     external_power                 = 0.;

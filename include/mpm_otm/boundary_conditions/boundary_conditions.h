@@ -70,9 +70,12 @@ namespace MpmOtm
    * The reaction of a condition is the sum of (M a - f)_i over its nodes,
    * with the mass matrix M of the solves: the force the boundary exerts on
    * the material, which the free nodes' equations M a = f leave over at
-   * the constrained ones. Fixed and slip conditions on sides normal to a
-   * coordinate direction also constrain the fixed components to zero in the
-   * velocity solves (fixed_components()), as the problems' own
+   * the constrained ones. f there is without the local damping's force
+   * (NodalSystem::damping_force), a numerical force that the boundary does
+   * not exert: with it, a coefficient alpha changed the reaction of a
+   * loading platen by up to alpha times itself. Fixed and slip conditions on
+   * sides normal to a coordinate direction also constrain the fixed components
+   * to zero in the velocity solves (fixed_components()), as the problems' own
    * FixedComponents do.
    */
   template <int dim>

@@ -43,7 +43,8 @@ namespace MpmOtm
     is_active(const double time) const;
 
     /**
-     * Damp the locally owned nodal forces of @p system (after assembly).
+     * Damp the locally owned nodal forces of @p system (after assembly),
+     * and keep the damping's share in NodalSystem::damping_force.
      */
     void
     apply(NodalSystem<dim> &system) const;

@@ -187,6 +187,12 @@ namespace MpmOtm
     std::array<VectorType, dim> momentum;
     /// Nodal forces f_k.
     std::array<VectorType, dim> force;
+    /**
+     * The share of #force that local damping added in this step (zero
+     * without damping): a numerical force, which the boundary reactions
+     * leave out.
+     */
+    std::array<VectorType, dim> damping_force;
     /// Nodal accelerations a_k.
     std::array<VectorType, dim> acceleration;
     /// Nodal velocities v_k^{s+1}.
