@@ -1,6 +1,7 @@
 #include <mpm_otm/base/plugins.h>
 #include <mpm_otm/materials/drucker_prager.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -64,22 +65,57 @@ namespace MpmOtm
   {
     Material<dim>::parse_parameters(prm);
     prm.enter_subsection("Drucker-Prager");
-    const std::string cone = prm.get("Cone");
-    const auto        parameters =
-      this->parse_frictional_parameters(prm, "Drucker-Prager");
-    phi               = parameters.friction_angle;
-    psi               = parameters.dilatancy_angle;
-    cohesion          = parameters.cohesion;
-    alpha_phi         = cone_coefficient(cone, phi, false);
-    alpha_dilatant    = cone_coefficient(cone, psi, false);
-    k_cohesion        = cohesion * cone_coefficient(cone, phi, true);
-    const double apex = (phi > 0.) ? k_cohesion / alpha_phi :
-                                     std::numeric_limits<double>::infinity();
-    p_cut_off         = this->parse_tension_cut_off(prm,
-                                            "Drucker-Prager/Tension cut-off",
-                                            apex,
-                                            "the apex c cot(phi)");
+    cone_name = prm.get("Cone");
+    strength  = this->parse_frictional_parameters(prm, "Drucker-Prager");
+    const Cone   peak_cone = make_cone(strength);
+    const double apex      = (strength.friction_angle > 0.) ?
+                               peak_cone.k_cohesion / peak_cone.alpha_phi :
+                               std::numeric_limits<double>::infinity();
+    requested_cut_off =
+      (Utilities::trim(prm.get("Tension cut-off")) == "apex") ?
+        std::numeric_limits<double>::infinity() :
+        this->parse_tension_cut_off(prm,
+                                    "Drucker-Prager/Tension cut-off",
+                                    apex,
+                                    "the apex c cot(phi)");
     prm.leave_subsection();
+    peak     = make_cone(strength);
+    residual = make_cone(strength.at(strength.softening_end));
+  }
+
+
+
+  template <int dim>
+  typename DruckerPrager<dim>::Cone
+  DruckerPrager<dim>::make_cone(
+    const typename PlasticMaterial<dim>::FrictionalParameters &strength) const
+  {
+    Cone cone;
+    cone.alpha_phi =
+      cone_coefficient(cone_name, strength.friction_angle, false);
+    cone.alpha_dilatant =
+      cone_coefficient(cone_name, strength.dilatancy_angle, false);
+    cone.k_cohesion =
+      strength.cohesion *
+      cone_coefficient(cone_name, strength.friction_angle, true);
+    const double apex = (strength.friction_angle > 0.) ?
+                          cone.k_cohesion / cone.alpha_phi :
+                          std::numeric_limits<double>::infinity();
+    cone.p_cut_off    = std::min(requested_cut_off, apex);
+    return cone;
+  }
+
+
+
+  template <int dim>
+  typename DruckerPrager<dim>::Cone
+  DruckerPrager<dim>::cone_at(const double plastic_strain) const
+  {
+    if (!(plastic_strain > strength.softening_start))
+      return peak;
+    if (plastic_strain >= strength.softening_end)
+      return residual;
+    return make_cone(strength.at(plastic_strain));
   }
 
 
@@ -89,8 +125,8 @@ namespace MpmOtm
   DruckerPrager<dim>::yield_function(const SymmetricTensor<2, 3> &stress) const
   {
     const SymmetricTensor<2, 3> s = deviator(stress);
-    return std::sqrt(0.5 * (s * s)) + alpha_phi * trace(stress) / 3. -
-           k_cohesion;
+    return std::sqrt(0.5 * (s * s)) + peak.alpha_phi * trace(stress) / 3. -
+           peak.k_cohesion;
   }
 
 
@@ -100,10 +136,15 @@ namespace MpmOtm
   DruckerPrager<dim>::return_stress(SymmetricTensor<2, 3> &stress,
                                     double                &plastic_strain) const
   {
-    const double                p_trial = trace(stress) / 3.;
-    const SymmetricTensor<2, 3> s_trial = deviator(stress);
-    const double tau_trial              = std::sqrt(0.5 * (s_trial * s_trial));
-    const double f_trial = tau_trial + alpha_phi * p_trial - k_cohesion;
+    const Cone                  cone           = cone_at(plastic_strain);
+    const double               &alpha_phi      = cone.alpha_phi;
+    const double               &alpha_dilatant = cone.alpha_dilatant;
+    const double               &k_cohesion     = cone.k_cohesion;
+    const double               &p_cut_off      = cone.p_cut_off;
+    const double                p_trial        = trace(stress) / 3.;
+    const SymmetricTensor<2, 3> s_trial        = deviator(stress);
+    const double tau_trial = std::sqrt(0.5 * (s_trial * s_trial));
+    const double f_trial   = tau_trial + alpha_phi * p_trial - k_cohesion;
     if (!(f_trial > 0.) && !(p_trial > p_cut_off))
       return Return::elastic;
 
@@ -168,16 +209,17 @@ namespace MpmOtm
   bool
   DruckerPrager<dim>::can_separate() const
   {
-    return std::isfinite(p_cut_off);
+    return std::isfinite(peak.p_cut_off) || std::isfinite(residual.p_cut_off);
   }
 
 
 
   template <int dim>
   bool
-  DruckerPrager<dim>::is_separated(const SymmetricTensor<2, 3> &stress) const
+  DruckerPrager<dim>::is_separated(const SymmetricTensor<2, 3> &stress,
+                                   const double plastic_strain) const
   {
-    return this->is_hydrostatic_at(stress, p_cut_off);
+    return this->is_hydrostatic_at(stress, cone_at(plastic_strain).p_cut_off);
   }
 
 
@@ -186,7 +228,7 @@ namespace MpmOtm
   double
   DruckerPrager<dim>::friction_angle() const
   {
-    return phi;
+    return strength.friction_angle;
   }
 
 
@@ -195,7 +237,7 @@ namespace MpmOtm
   double
   DruckerPrager<dim>::dilatancy_angle() const
   {
-    return psi;
+    return strength.dilatancy_angle;
   }
 
 
@@ -204,7 +246,7 @@ namespace MpmOtm
   double
   DruckerPrager<dim>::alpha() const
   {
-    return alpha_phi;
+    return peak.alpha_phi;
   }
 
 
@@ -213,7 +255,7 @@ namespace MpmOtm
   double
   DruckerPrager<dim>::alpha_psi() const
   {
-    return alpha_dilatant;
+    return peak.alpha_dilatant;
   }
 
 
@@ -222,7 +264,7 @@ namespace MpmOtm
   double
   DruckerPrager<dim>::k() const
   {
-    return k_cohesion;
+    return peak.k_cohesion;
   }
 
 
@@ -231,7 +273,7 @@ namespace MpmOtm
   double
   DruckerPrager<dim>::tension_cut_off() const
   {
-    return p_cut_off;
+    return peak.p_cut_off;
   }
 
 

@@ -81,37 +81,58 @@ namespace MpmOtm
   {
     Material<dim>::parse_parameters(prm);
     prm.enter_subsection("Mohr-Coulomb");
-    const auto parameters =
-      this->parse_frictional_parameters(prm, "Mohr-Coulomb");
-    phi          = parameters.friction_angle;
-    psi          = parameters.dilatancy_angle;
-    c            = parameters.cohesion;
-    sin_phi      = std::sin(phi);
-    cos_phi      = std::cos(phi);
-    sin_psi      = std::sin(psi);
-    apex_stress  = (phi > 0.) ? c * cos_phi / sin_phi :
-                                std::numeric_limits<double>::infinity();
-    sigma_t      = this->parse_tension_cut_off(prm,
-                                          "Mohr-Coulomb/Tension cut-off",
-                                          apex_stress,
-                                          "the apex c cot(phi)");
-    with_cut_off = sigma_t < apex_stress;
+    strength = this->parse_frictional_parameters(prm, "Mohr-Coulomb");
+    const double apex =
+      (strength.friction_angle > 0.) ?
+        strength.cohesion / std::tan(strength.friction_angle) :
+        std::numeric_limits<double>::infinity();
+    requested_cut_off =
+      (Utilities::trim(prm.get("Tension cut-off")) == "apex") ?
+        std::numeric_limits<double>::infinity() :
+        this->parse_tension_cut_off(prm,
+                                    "Mohr-Coulomb/Tension cut-off",
+                                    apex,
+                                    "the apex c cot(phi)");
     prm.leave_subsection();
+    peak     = make_surface(strength);
+    residual = make_surface(strength.at(strength.softening_end));
+  }
 
-    for (unsigned int i = 0; i < planes.size(); ++i)
-      planes[i] = make_plane(i);
-    candidates = {make_candidate({{0, 0, 0}}, 1, Return::plane),
-                  make_candidate({{0, 1, 0}}, 2, Return::right_edge),
-                  make_candidate({{0, 2, 0}}, 2, Return::left_edge)};
-    if (with_cut_off)
+
+
+  template <int dim>
+  typename MohrCoulomb<dim>::Surface
+  MohrCoulomb<dim>::make_surface(
+    const typename PlasticMaterial<dim>::FrictionalParameters &strength) const
+  {
+    Surface surface;
+    surface.sin_phi      = std::sin(strength.friction_angle);
+    surface.cos_phi      = std::cos(strength.friction_angle);
+    surface.sin_psi      = std::sin(strength.dilatancy_angle);
+    surface.c            = strength.cohesion;
+    surface.apex_stress  = (strength.friction_angle > 0.) ?
+                             surface.c * surface.cos_phi / surface.sin_phi :
+                             std::numeric_limits<double>::infinity();
+    surface.sigma_t      = std::min(requested_cut_off, surface.apex_stress);
+    surface.with_cut_off = surface.sigma_t < surface.apex_stress;
+
+    for (unsigned int i = 0; i < surface.planes.size(); ++i)
+      surface.planes[i] = make_plane(surface, i);
+    unsigned int n   = 0;
+    const auto   add = [&](const std::array<unsigned int, 3> &active,
+                         const unsigned int                 n_active,
+                         const Return                       type) {
+      surface.candidates[n++] = make_candidate(surface, active, n_active, type);
+    };
+    add({{0, 0, 0}}, 1, Return::plane);
+    add({{0, 1, 0}}, 2, Return::right_edge);
+    add({{0, 2, 0}}, 2, Return::left_edge);
+    if (surface.with_cut_off)
       {
-        candidates.push_back(make_candidate({{3, 0, 0}}, 1, Return::cut_off));
-        candidates.push_back(
-          make_candidate({{3, 4, 0}}, 2, Return::cut_off_edge));
-        candidates.push_back(
-          make_candidate({{0, 3, 0}}, 2, Return::plane_and_cut_off));
-        candidates.push_back(
-          make_candidate({{0, 1, 3}}, 3, Return::right_edge_and_cut_off));
+        add({{3, 0, 0}}, 1, Return::cut_off);
+        add({{3, 4, 0}}, 2, Return::cut_off_edge);
+        add({{0, 3, 0}}, 2, Return::plane_and_cut_off);
+        add({{0, 1, 3}}, 3, Return::right_edge_and_cut_off);
         // The four planes through the corner of the left edge and the
         // cut-off, three at a time (their flow vectors span the same cone).
         for (const std::array<unsigned int, 3> corner :
@@ -119,20 +140,37 @@ namespace MpmOtm
               std::array<unsigned int, 3>{{0, 3, 4}},
               std::array<unsigned int, 3>{{2, 3, 4}},
               std::array<unsigned int, 3>{{0, 2, 4}}})
-          candidates.push_back(
-            make_candidate(corner, 3, Return::left_edge_and_cut_off));
-        candidates.push_back(
-          make_candidate({{3, 4, 5}}, 3, Return::cut_off_apex));
+          add(corner, 3, Return::left_edge_and_cut_off);
+        add({{3, 4, 5}}, 3, Return::cut_off_apex);
       }
+    surface.n_candidates = n;
+    return surface;
+  }
+
+
+
+  template <int dim>
+  const typename MohrCoulomb<dim>::Surface &
+  MohrCoulomb<dim>::surface_at(const double plastic_strain,
+                               Surface     &buffer) const
+  {
+    if (!(plastic_strain > strength.softening_start))
+      return peak;
+    if (plastic_strain >= strength.softening_end)
+      return residual;
+    buffer = make_surface(strength.at(plastic_strain));
+    return buffer;
   }
 
 
 
   template <int dim>
   typename MohrCoulomb<dim>::Plane
-  MohrCoulomb<dim>::make_plane(const unsigned int i) const
+  MohrCoulomb<dim>::make_plane(const Surface     &surface,
+                               const unsigned int i) const
   {
-    const double sp = sin_phi, ss = sin_psi, r = 2. * c * cos_phi;
+    const double sp = surface.sin_phi, ss = surface.sin_psi,
+                 r = 2. * surface.c * surface.cos_phi;
     switch (i)
       {
         case 0:
@@ -145,7 +183,7 @@ namespace MpmOtm
           {
             std::array<double, 3> e{{0., 0., 0.}};
             e[i - 3] = 1.;
-            return {e, e, sigma_t};
+            return {e, e, surface.sigma_t};
           }
       }
   }
@@ -157,17 +195,19 @@ namespace MpmOtm
   MohrCoulomb<dim>::yield_function(
     const std::array<double, 3> &principal_stresses) const
   {
-    return dot(planes[0].a, principal_stresses) - planes[0].r;
+    return dot(peak.planes[0].a, principal_stresses) - peak.planes[0].r;
   }
 
 
 
   template <int dim>
   typename MohrCoulomb<dim>::Candidate
-  MohrCoulomb<dim>::make_candidate(const std::array<unsigned int, 3> &active,
+  MohrCoulomb<dim>::make_candidate(const Surface                     &surface,
+                                   const std::array<unsigned int, 3> &active,
                                    const unsigned int                 n_active,
                                    const Return type) const
   {
+    const auto  &planes = surface.planes;
     const double G      = this->mu_lame;
     const double lambda = this->lambda_lame;
     Candidate    candidate;
@@ -235,6 +275,7 @@ namespace MpmOtm
   template <int dim>
   bool
   MohrCoulomb<dim>::try_return(
+    const Surface               &surface,
     const Candidate             &candidate,
     const std::array<double, 3> &trial,
     const double                 tolerance,
@@ -243,6 +284,7 @@ namespace MpmOtm
   {
     if (!candidate.solvable)
       return false;
+    const auto        &planes   = surface.planes;
     const unsigned int n_active = candidate.n_planes;
     double             violation[3];
     for (unsigned int i = 0; i < n_active; ++i)
@@ -272,7 +314,7 @@ namespace MpmOtm
           }
       }
     // Admissible: every plane, and the order of the principal stresses.
-    for (unsigned int i = 0; i < (with_cut_off ? 6u : 3u); ++i)
+    for (unsigned int i = 0; i < (surface.with_cut_off ? 6u : 3u); ++i)
       if (dot(planes[i].a, result) - planes[i].r > tolerance)
         return false;
     return result[0] >= result[1] - tolerance &&
@@ -287,8 +329,29 @@ namespace MpmOtm
     std::array<double, 3> &principal_stresses,
     double                &plastic_strain) const
   {
-    const std::array<double, 3> trial = principal_stresses;
-    if (!(yield_function(trial) > 0.) && !(with_cut_off && trial[0] > sigma_t))
+    Surface buffer;
+    return return_to(surface_at(plastic_strain, buffer),
+                     principal_stresses,
+                     plastic_strain);
+  }
+
+
+
+  template <int dim>
+  typename MohrCoulomb<dim>::Return
+  MohrCoulomb<dim>::return_to(const Surface         &surface,
+                              std::array<double, 3> &principal_stresses,
+                              double                &plastic_strain) const
+  {
+    const double               &c            = surface.c;
+    const double               &sin_phi      = surface.sin_phi;
+    const double               &sin_psi      = surface.sin_psi;
+    const double               &sigma_t      = surface.sigma_t;
+    const bool                 &with_cut_off = surface.with_cut_off;
+    const double               &apex_stress  = surface.apex_stress;
+    const std::array<double, 3> trial        = principal_stresses;
+    if (!(dot(surface.planes[0].a, trial) - surface.planes[0].r > 0.) &&
+        !(with_cut_off && trial[0] > sigma_t))
       return Return::elastic;
 
     // Results are accepted with violations of 1e-12 of the stresses'
@@ -313,11 +376,12 @@ namespace MpmOtm
         const bool right_first = (1. - sin_psi) * trial[0] - 2. * trial[1] +
                                    (1. + sin_psi) * trial[2] >=
                                  0.;
-        for (unsigned int i = 0; i < candidates.size(); ++i)
+        for (unsigned int i = 0; i < surface.n_candidates; ++i)
           {
             const Candidate &candidate =
-              candidates[(right_first || i == 0 || i > 2) ? i : 3 - i];
-            if (try_return(candidate,
+              surface.candidates[(right_first || i == 0 || i > 2) ? i : 3 - i];
+            if (try_return(surface,
+                           candidate,
                            trial,
                            tolerance,
                            principal_stresses,
@@ -360,6 +424,8 @@ namespace MpmOtm
   MohrCoulomb<dim>::return_stress(SymmetricTensor<2, 3> &stress,
                                   double                &plastic_strain) const
   {
+    Surface        buffer;
+    const Surface &surface = surface_at(plastic_strain, buffer);
     // The principal stresses first (sorted by decreasing value): most
     // points are elastic or return to the apex, where the eigenvectors are
     // not needed.
@@ -373,8 +439,7 @@ namespace MpmOtm
       {
         const std::array<double, 3> trial     = eigenvalues(stress);
         std::array<double, 3>       principal = trial;
-        const Return                type =
-          return_principal_stresses(principal, plastic_strain);
+        const Return type = return_to(surface, principal, plastic_strain);
         if (type == Return::elastic || hydrostatic(principal))
           return type;
         // sigma = sum_i sigma_i v_i v_i^T with the trial's eigenvectors,
@@ -390,7 +455,7 @@ namespace MpmOtm
     // follow in closed form.
     const PlanePrincipalValues trial     = plane_principal_values(stress);
     std::array<double, 3>      principal = trial.values;
-    const Return type = return_principal_stresses(principal, plastic_strain);
+    const Return type = return_to(surface, principal, plastic_strain);
     if (type == Return::elastic || hydrostatic(principal))
       return type;
     double change[3];
@@ -428,17 +493,30 @@ namespace MpmOtm
   bool
   MohrCoulomb<dim>::can_separate() const
   {
-    return std::isfinite((with_cut_off ? sigma_t : apex_stress));
+    return std::isfinite(peak.sigma_t) || std::isfinite(residual.sigma_t);
   }
 
 
 
   template <int dim>
   bool
-  MohrCoulomb<dim>::is_separated(const SymmetricTensor<2, 3> &stress) const
+  MohrCoulomb<dim>::is_separated(const SymmetricTensor<2, 3> &stress,
+                                 const double plastic_strain) const
   {
-    return this->is_hydrostatic_at(stress,
-                                   (with_cut_off ? sigma_t : apex_stress));
+    // The vertex of the surface the return used: sigma_t is the apex
+    // without a cut-off.
+    double vertex = peak.sigma_t;
+    if (plastic_strain >= strength.softening_end)
+      vertex = residual.sigma_t;
+    else if (plastic_strain > strength.softening_start)
+      {
+        const auto now = strength.at(plastic_strain);
+        vertex         = std::min(requested_cut_off,
+                          (now.friction_angle > 0.) ?
+                                    now.cohesion / std::tan(now.friction_angle) :
+                                    std::numeric_limits<double>::infinity());
+      }
+    return this->is_hydrostatic_at(stress, vertex);
   }
 
 
@@ -447,7 +525,7 @@ namespace MpmOtm
   double
   MohrCoulomb<dim>::friction_angle() const
   {
-    return phi;
+    return strength.friction_angle;
   }
 
 
@@ -456,7 +534,7 @@ namespace MpmOtm
   double
   MohrCoulomb<dim>::dilatancy_angle() const
   {
-    return psi;
+    return strength.dilatancy_angle;
   }
 
 
@@ -465,7 +543,7 @@ namespace MpmOtm
   double
   MohrCoulomb<dim>::cohesion() const
   {
-    return c;
+    return strength.cohesion;
   }
 
 
@@ -474,7 +552,7 @@ namespace MpmOtm
   double
   MohrCoulomb<dim>::tension_cut_off() const
   {
-    return sigma_t;
+    return peak.sigma_t;
   }
 
 

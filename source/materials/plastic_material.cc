@@ -80,7 +80,8 @@ namespace MpmOtm
 
   template <int dim>
   bool
-  PlasticMaterial<dim>::is_separated(const SymmetricTensor<2, 3> &) const
+  PlasticMaterial<dim>::is_separated(const SymmetricTensor<2, 3> &,
+                                     const double) const
   {
     return false;
   }
@@ -223,11 +224,12 @@ namespace MpmOtm
       }
     SymmetricTensor<2, 3> stress =
       elastic_trial_stress(to_three_dimensions(state), gradient, dt);
-    const double trial_trace = trace(stress);
+    const double trial_trace    = trace(stress);
+    const double plastic_strain = internal[0];
     return_map(stress, internal);
     // Returned to the apex: the volumetric plastic strain of the return is
     // the separation taken in this step.
-    if (separation != nullptr && is_separated(stress))
+    if (separation != nullptr && is_separated(stress, plastic_strain))
       *separation += (trial_trace - trace(stress)) /
                      (3. * this->lambda_lame + 2. * this->mu_lame);
     for (unsigned int i = 0; i < dim; ++i)
@@ -317,7 +319,72 @@ namespace MpmOtm
                         "cot(phi)]; the word 'apex' (default) puts it at "
                         "the apex c cot(phi) of the yield surface, i.e. no "
                         "cut-off besides the apex (none at all for phi = "
-                        "0).");
+                        "0). With softening, 'apex' follows the softened "
+                        "apex, and a number is lowered to it where it lies "
+                        "above.");
+    prm.declare_entry(
+      "Softening strains",
+      "",
+      Patterns::Anything(),
+      "Strain softening: 'eps_1, eps_2', two values of the equivalent plastic "
+      "strain (the internal variable plastic_strain), 0 <= eps_1 < eps_2. The "
+      "friction angle, dilatancy angle and cohesion keep their (peak) values "
+      "up to eps_1, take their residual values from eps_2 on and are linear "
+      "in between (evaluated with the point's strain at the start of each "
+      "step). Empty (default): no softening. The results then depend on the "
+      "cell size (manual, 'Materials').");
+    prm.declare_entry("Residual friction angle",
+                      "",
+                      Patterns::Anything(),
+                      "With Softening strains: the residual friction angle "
+                      "(degrees, at most the friction angle). Empty: the "
+                      "friction angle.");
+    prm.declare_entry("Residual dilatancy angle",
+                      "",
+                      Patterns::Anything(),
+                      "With Softening strains: the residual dilatancy angle "
+                      "(degrees, at most the dilatancy angle and the "
+                      "residual friction angle). Empty: the dilatancy "
+                      "angle.");
+    prm.declare_entry("Residual cohesion",
+                      "",
+                      Patterns::Anything(),
+                      "With Softening strains: the residual cohesion (Pa, "
+                      "at most the cohesion). Empty: the cohesion.");
+  }
+
+
+
+  template <int dim>
+  bool
+  PlasticMaterial<dim>::FrictionalParameters::softens() const
+  {
+    return std::isfinite(softening_start);
+  }
+
+
+
+  template <int dim>
+  typename PlasticMaterial<dim>::FrictionalParameters
+  PlasticMaterial<dim>::FrictionalParameters::at(
+    const double plastic_strain) const
+  {
+    FrictionalParameters result;
+    const double         fraction =
+      !softens() || plastic_strain <= softening_start ?
+                0. :
+              plastic_strain >= softening_end ?
+                1. :
+                (plastic_strain - softening_start) / (softening_end - softening_start);
+    result.friction_angle =
+      friction_angle + fraction * (residual_friction_angle - friction_angle);
+    result.dilatancy_angle =
+      dilatancy_angle + fraction * (residual_dilatancy_angle - dilatancy_angle);
+    result.cohesion = cohesion + fraction * (residual_cohesion - cohesion);
+    result.residual_friction_angle  = result.friction_angle;
+    result.residual_dilatancy_angle = result.dilatancy_angle;
+    result.residual_cohesion        = result.cohesion;
+    return result;
   }
 
 
@@ -347,6 +414,85 @@ namespace MpmOtm
     parameters.friction_angle  = phi_degrees * M_PI / 180.;
     parameters.dilatancy_angle = psi_degrees * M_PI / 180.;
     parameters.cohesion        = c;
+
+    // Strain softening: the residual values, each the peak one if empty.
+    const auto number = [&](const std::string &entry,
+                            const double       peak,
+                            const std::string &unit) {
+      const std::string text = Utilities::trim(prm.get(entry));
+      if (text.empty())
+        return peak;
+      double value = 0;
+      try
+        {
+          value = Utilities::string_to_double(text);
+        }
+      catch (...)
+        {
+          AssertThrow(false,
+                      ExcMessage(this->entry_name(model + "/" + entry) +
+                                 " must be a number (" + unit +
+                                 ") or empty; here it is <" + text + ">."));
+        }
+      AssertThrow(std::isfinite(value) && value >= 0. && value <= peak,
+                  ExcMessage(this->entry_name(model + "/" + entry) +
+                             " must lie in [0, " + to_text(peak) + "] " + unit +
+                             ", at most the peak value (here " +
+                             to_text(value) + ")."));
+      return value;
+    };
+    const double phi_residual =
+      number("Residual friction angle", phi_degrees, "degrees");
+    const double psi_residual =
+      number("Residual dilatancy angle", psi_degrees, "degrees");
+    const double c_residual = number("Residual cohesion", c, "Pa");
+    AssertThrow(psi_residual <= phi_residual,
+                ExcMessage(
+                  this->entry_name(model + "/Residual dilatancy angle") +
+                  " must not exceed the residual friction angle " +
+                  to_text(phi_residual) + " degrees (here " +
+                  to_text(psi_residual) + ")."));
+    parameters.residual_friction_angle  = phi_residual * M_PI / 180.;
+    parameters.residual_dilatancy_angle = psi_residual * M_PI / 180.;
+    parameters.residual_cohesion        = c_residual;
+    const std::string strains = Utilities::trim(prm.get("Softening strains"));
+    const bool        residual_differs = phi_residual != phi_degrees ||
+                                  psi_residual != psi_degrees ||
+                                  c_residual != c;
+    if (strains.empty())
+      {
+        AssertThrow(!residual_differs,
+                    ExcMessage(
+                      "Residual values of " + this->entry_name(model) +
+                      " are given, but no " +
+                      this->entry_name(model + "/Softening strains") +
+                      ": give 'eps_1, eps_2', the equivalent plastic strains "
+                      "between which the strengths soften."));
+      }
+    else
+      {
+        const std::string message =
+          this->entry_name(model + "/Softening strains") +
+          " must be two equivalent plastic strains 'eps_1, eps_2' with "
+          "0 <= eps_1 < eps_2; here it is <" +
+          strains + ">.";
+        std::vector<double> values;
+        try
+          {
+            values = Utilities::string_to_double(
+              Utilities::split_string_list(strains, ','));
+          }
+        catch (...)
+          {
+            AssertThrow(false, ExcMessage(message));
+          }
+        AssertThrow(values.size() == 2 && std::isfinite(values[0]) &&
+                      std::isfinite(values[1]) && values[0] >= 0. &&
+                      values[0] < values[1],
+                    ExcMessage(message));
+        parameters.softening_start = values[0];
+        parameters.softening_end   = values[1];
+      }
     return parameters;
   }
 

@@ -175,6 +175,46 @@ main(int argc, char **argv)
       check_rejected(model,
                      {{"Friction angle", "30"}, {"Tension cut-off", "0.1"}},
                      "Tension cut-off");
+      // Strain softening: residual values at most the peak ones, strains
+      // 0 <= eps_1 < eps_2, residual values only with strains.
+      const auto softening = [&](const std::string &entry,
+                                 const std::string &value) {
+        Entries entries = with("Softening strains", "0, 0.1");
+        entries.push_back({entry, value});
+        return entries;
+      };
+      check_rejected(model,
+                     softening("Residual cohesion", "1.5"),
+                     "Residual cohesion");
+      check_rejected(model,
+                     softening("Residual friction angle", "35"),
+                     "Residual friction angle");
+      check_rejected(model,
+                     softening("Residual cohesion", "few"),
+                     "Residual cohesion");
+      check_rejected(model,
+                     {{"Friction angle", "30"},
+                      {"Dilatancy angle", "20"},
+                      {"Cohesion", "1"},
+                      {"Softening strains", "0, 0.1"},
+                      {"Residual friction angle", "10"}},
+                     "Residual dilatancy angle");
+      check_rejected(model,
+                     with("Softening strains", "0.2, 0.1"),
+                     "Softening strains");
+      check_rejected(model,
+                     with("Softening strains", "-0.1, 0.1"),
+                     "Softening strains");
+      check_rejected(model,
+                     with("Softening strains", "0.1"),
+                     "Softening strains");
+      check_rejected(model,
+                     with("Residual cohesion", "0.5"),
+                     "Softening strains");
+      const auto softening_material =
+        make_sand(model, softening("Residual cohesion", "0.25"));
+      check(softening_material->friction_angle() == M_PI / 6.,
+            model + ": softening with the peak friction angle as residual");
     }
   check_rejected("von Mises", {{"Yield stress", "0"}}, "Yield stress");
   check_rejected("von Mises",

@@ -50,6 +50,12 @@ namespace MpmOtm
    * alpha_psi I / 3) + d gamma_t I / 3 and the equivalent plastic strain
    * (internal variable 0) grows by sqrt(2/3) times its norm.
    *
+   * Strain softening (Softening strains, Residual friction angle, ...;
+   * PlasticMaterial::FrictionalParameters): alpha, k, alpha_psi and the
+   * cut-off are those of phi, psi and c at the point's equivalent plastic
+   * strain at the start of the step (explicit softening; a numeric cut-off
+   * is lowered to a softened apex below it).
+   *
    * Entries (subsection "Drucker-Prager"): Friction angle (degrees, in
    * [0, 90)), Dilatancy angle (degrees, in [0, Friction angle]), Cohesion
    * (Pa, >= 0), Tension cut-off (Pa in [0, c cot(phi)], or "apex", the
@@ -87,9 +93,9 @@ namespace MpmOtm
                const ArrayView<double> &internal_variables) const override;
 
     /**
-     * The return mapping of return_map(): return @p stress, add the
-     * equivalent plastic strain increment to @p plastic_strain and say which
-     * return was taken.
+     * The return mapping of return_map(): return @p stress with the cone of
+     * the equivalent plastic strain @p plastic_strain, add the increment to
+     * @p plastic_strain and say which return was taken.
      */
     Return
     return_stress(SymmetricTensor<2, 3> &stress, double &plastic_strain) const;
@@ -105,16 +111,17 @@ namespace MpmOtm
      * set), every component to 1e-12 E.
      */
     bool
-    is_separated(const SymmetricTensor<2, 3> &stress) const override;
+    is_separated(const SymmetricTensor<2, 3> &stress,
+                 const double                 plastic_strain) const override;
 
     /**
-     * The dilatancy angle psi (radians).
+     * The (peak) dilatancy angle psi (radians).
      */
     double
     dilatancy_angle() const;
 
     /**
-     * The cone's friction coefficient alpha.
+     * The (peak) cone's friction coefficient alpha.
      */
     double
     alpha() const;
@@ -139,19 +146,47 @@ namespace MpmOtm
     tension_cut_off() const;
 
     /**
-     * The cone's yield function sqrt(J2) + alpha p - k of @p stress (Pa).
+     * The (peak) cone's yield function sqrt(J2) + alpha p - k of @p stress
+     * (Pa).
      */
     double
     yield_function(const SymmetricTensor<2, 3> &stress) const;
 
   private:
-    double phi            = 0;
-    double psi            = 0;
-    double cohesion       = 0;
-    double alpha_phi      = 0;
-    double alpha_dilatant = 0;
-    double k_cohesion     = 0;
-    double p_cut_off      = 0;
+    /**
+     * The cone of one strength: alpha, alpha_psi, k and the cut-off p_t.
+     */
+    struct Cone
+    {
+      double alpha_phi      = 0;
+      double alpha_dilatant = 0;
+      double k_cohesion     = 0;
+      double p_cut_off      = 0;
+    };
+
+    /**
+     * The cone of the friction angle, dilatancy angle and cohesion of
+     * @p strength (its peak values) with the requested cut-off.
+     */
+    Cone
+    make_cone(const typename PlasticMaterial<dim>::FrictionalParameters
+                &strength) const;
+
+    /**
+     * The cone at the equivalent plastic strain @p plastic_strain.
+     */
+    Cone
+    cone_at(const double plastic_strain) const;
+
+    /// Peak and residual strengths and the softening strains.
+    typename PlasticMaterial<dim>::FrictionalParameters strength;
+    /// "plane strain", "outer" or "inner".
+    std::string cone_name;
+    /// The requested cut-off: a number, or infinite for "apex".
+    double requested_cut_off = 0;
+    /// The cones of the peak and the residual strength.
+    Cone peak;
+    Cone residual;
   };
 } // namespace MpmOtm
 

@@ -131,8 +131,8 @@ namespace MpmOtm
     /**
      * The return in principal space: @p principal_stresses (sorted,
      * sigma_1 >= sigma_2 >= sigma_3) are the trial's on entry and the
-     * returned ones on exit; the equivalent plastic strain increment is
-     * added to @p plastic_strain.
+     * returned ones on exit, with the strength of the equivalent plastic
+     * strain @p plastic_strain, to which the increment is added.
      */
     Return
     return_principal_stresses(std::array<double, 3> &principal_stresses,
@@ -149,7 +149,8 @@ namespace MpmOtm
      * set), every component to 1e-12 E.
      */
     bool
-    is_separated(const SymmetricTensor<2, 3> &stress) const override;
+    is_separated(const SymmetricTensor<2, 3> &stress,
+                 const double                 plastic_strain) const override;
 
     /**
      * The dilatancy angle psi (radians).
@@ -206,53 +207,92 @@ namespace MpmOtm
     };
 
     /**
-     * The plane @p i of the admissible set: 0, 1, 2 the Mohr-Coulomb planes
-     * of the pairs (1, 3), (1, 2), (2, 3); 3, 4, 5 the cut-off planes
-     * sigma_1, sigma_2, sigma_3 = sigma_t.
+     * The admissible set of one strength (friction angle, dilatancy angle,
+     * cohesion and cut-off): its planes and its returns, computed once
+     * (for the peak and the residual strength in parse_parameters(), for
+     * the strengths in between per point and step of a softening point).
      */
-    Plane
-    make_plane(const unsigned int i) const;
+    struct Surface
+    {
+      double sin_phi      = 0;
+      double cos_phi      = 1;
+      double sin_psi      = 0;
+      double c            = 0;
+      double sigma_t      = 0;
+      bool   with_cut_off = false;
+      double apex_stress  = 0;
+      /// The six planes of make_plane().
+      std::array<Plane, 6> planes;
+      /// The returns in the order they are tried: the main plane, the right
+      /// edge, the left edge, then (with the cut-off only) the returns that
+      /// involve the cut-off; the first n_candidates are used.
+      std::array<Candidate, 12> candidates;
+      unsigned int              n_candidates = 0;
+    };
 
     /**
-     * The candidate returning to @p n_planes of the planes @p planes.
+     * The surface of the friction angle, dilatancy angle and cohesion of
+     * @p strength (its peak values) with the requested cut-off.
+     */
+    Surface
+    make_surface(const typename PlasticMaterial<dim>::FrictionalParameters
+                   &strength) const;
+
+    /**
+     * The surface at the equivalent plastic strain @p plastic_strain: the
+     * peak or the residual one, or one made in @p buffer.
+     */
+    const Surface &
+    surface_at(const double plastic_strain, Surface &buffer) const;
+
+    /**
+     * The plane @p i of the admissible set of @p surface: 0, 1, 2 the
+     * Mohr-Coulomb planes of the pairs (1, 3), (1, 2), (2, 3); 3, 4, 5 the
+     * cut-off planes sigma_1, sigma_2, sigma_3 = sigma_t.
+     */
+    Plane
+    make_plane(const Surface &surface, const unsigned int i) const;
+
+    /**
+     * The candidate returning to @p n_planes of the planes @p planes of
+     * @p surface.
      */
     Candidate
-    make_candidate(const std::array<unsigned int, 3> &planes,
+    make_candidate(const Surface                     &surface,
+                   const std::array<unsigned int, 3> &planes,
                    const unsigned int                 n_planes,
                    const Return                       type) const;
 
     /**
-     * Try the return of @p candidate from the trial @p trial; on success
-     * (multipliers >= 0, result admissible) set @p result and the plastic
-     * strain increment @p plastic_strain_increment (principal) and return
-     * true.
+     * Try the return of @p candidate of @p surface from the trial @p trial;
+     * on success (multipliers >= 0, result admissible) set @p result and
+     * the plastic strain increment @p plastic_strain_increment (principal)
+     * and return true.
      */
     bool
-    try_return(const Candidate             &candidate,
+    try_return(const Surface               &surface,
+               const Candidate             &candidate,
                const std::array<double, 3> &trial,
                const double                 tolerance,
                std::array<double, 3>       &result,
                std::array<double, 3>       &plastic_strain_increment) const;
 
-    /// The six planes of make_plane().
-    std::array<Plane, 6> planes;
-
     /**
-     * The returns in the order they are tried: the main plane, the right
-     * edge, the left edge, then (with the cut-off only) the returns that
-     * involve the cut-off.
+     * The return in principal space with @p surface (see
+     * return_principal_stresses()).
      */
-    std::vector<Candidate> candidates;
+    Return
+    return_to(const Surface         &surface,
+              std::array<double, 3> &principal_stresses,
+              double                &plastic_strain) const;
 
-    double phi          = 0;
-    double psi          = 0;
-    double c            = 0;
-    double sin_phi      = 0;
-    double cos_phi      = 1;
-    double sin_psi      = 0;
-    double sigma_t      = 0;
-    bool   with_cut_off = false;
-    double apex_stress  = 0;
+    /// Peak and residual strengths and the softening strains.
+    typename PlasticMaterial<dim>::FrictionalParameters strength;
+    /// The requested cut-off: a number, or infinite for "apex".
+    double requested_cut_off = 0;
+    /// The surfaces of the peak and the residual strength.
+    Surface peak;
+    Surface residual;
   };
 } // namespace MpmOtm
 

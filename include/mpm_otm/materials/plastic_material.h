@@ -3,6 +3,8 @@
 
 #include <mpm_otm/materials/hypo_elastic.h>
 
+#include <limits>
+
 namespace MpmOtm
 {
   /**
@@ -106,13 +108,16 @@ namespace MpmOtm
     additional_internal_variables() const;
 
     /**
-     * Whether @p stress, returned by return_map(), is the stress of a point
-     * that has lost contact: the hydrostatic stress of the apex of a
-     * frictional model (0 for a cohesionless one), where it can only
-     * expand. False by default (von Mises has no apex).
+     * Whether @p stress, returned by return_map() with the strength of the
+     * equivalent plastic strain @p plastic_strain (the point's at the start
+     * of the step), is the stress of a point that has lost contact: the
+     * hydrostatic stress of the apex of a frictional model (0 for a
+     * cohesionless one), where it can only expand. False by default (von
+     * Mises has no apex).
      */
     virtual bool
-    is_separated(const SymmetricTensor<2, 3> &stress) const;
+    is_separated(const SymmetricTensor<2, 3> &stress,
+                 const double                 plastic_strain) const;
 
     /**
      * Whether the model has an apex where points can lose contact (and so
@@ -124,13 +129,36 @@ namespace MpmOtm
   protected:
     /**
      * Friction angle phi and dilatancy angle psi (radians) and cohesion c
-     * (Pa) of a frictional model (Drucker-Prager, Mohr-Coulomb).
+     * (Pa) of a frictional model (Drucker-Prager, Mohr-Coulomb), at their
+     * peak and, with strain softening, their residual values: the peak
+     * holds up to the equivalent plastic strain eps_1, the residual from
+     * eps_2 on, and each of the three is linear in eps_p between them.
      */
     struct FrictionalParameters
     {
-      double friction_angle  = 0;
-      double dilatancy_angle = 0;
-      double cohesion        = 0;
+      double friction_angle           = 0;
+      double dilatancy_angle          = 0;
+      double cohesion                 = 0;
+      double residual_friction_angle  = 0;
+      double residual_dilatancy_angle = 0;
+      double residual_cohesion        = 0;
+      /// eps_1 and eps_2; infinite without softening.
+      double softening_start = std::numeric_limits<double>::infinity();
+      double softening_end   = std::numeric_limits<double>::infinity();
+
+      /**
+       * Whether the strengths soften.
+       */
+      bool
+      softens() const;
+
+      /**
+       * The friction angle, dilatancy angle and cohesion at the equivalent
+       * plastic strain @p plastic_strain (the returned object's peak
+       * values; it does not soften).
+       */
+      FrictionalParameters
+      at(const double plastic_strain) const;
     };
 
     /**
@@ -138,7 +166,8 @@ namespace MpmOtm
      * entries every frictional model has: Friction angle, Dilatancy angle
      * (documented with @p plastic_potential, the model's plastic potential),
      * Cohesion and Tension cut-off (documented with @p cut_off, the stress
-     * it limits).
+     * it limits), and those of strain softening: Softening strains,
+     * Residual friction angle, Residual dilatancy angle, Residual cohesion.
      */
     static void
     declare_frictional_parameters(ParameterHandler  &prm,
@@ -148,7 +177,12 @@ namespace MpmOtm
     /**
      * Read and check the entries of declare_frictional_parameters() but the
      * tension cut-off from the current subsection of @p prm, that of the
-     * model @p model (named in messages).
+     * model @p model (named in messages): the peak values, and the
+     * residual ones (each the peak value if left empty) with the strains of
+     * "Softening strains" (none if empty). A residual above its peak, a
+     * residual dilatancy above the residual friction, residual values
+     * without softening strains, and strains that are negative or not
+     * increasing are refused with a message that names the entry.
      */
     FrictionalParameters
     parse_frictional_parameters(ParameterHandler  &prm,
