@@ -1,18 +1,20 @@
 #!/usr/bin/env bash
-# Run the benchmarks G1-G4 of doc/benchmarks.md (BENCHMARKS.md "Beyond the
-# seeds") with the parameter files in prm/, collect the numbers in
-# doc/data/G*.dat and draw doc/figures/G*.png with gnuplot (Debian package
+# Run the benchmarks G1-G5 of doc/benchmarks.md (BENCHMARKS.md "Beyond the
+# seeds") and the biaxial test with strain softening with the parameter
+# files in prm/, collect the numbers in doc/data/G*.dat and biaxial-*.dat
+# and draw the figures in doc/figures/ with gnuplot (Debian package
 # gnuplot-nox; doc/scripts/user_problems.gp).
 #
-# Usage: doc/scripts/reproduce_user_problems.sh [path to mpm-otm] [G1 G2 G3 G4 G5]
-# (default: build-release/mpm-otm, made by ./scripts/setup.sh run; all five;
-# G5 needs python3-numpy for Bishop's method)
+# Usage: doc/scripts/reproduce_user_problems.sh [path to mpm-otm]
+#   [G1 G2 G3 G4 G5 biaxial]
+# (default: build-release/mpm-otm, made by ./scripts/setup.sh run; all of
+# them; G5 needs python3-numpy for Bishop's method)
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
 exe=${1:-$root/build-release/mpm-otm}
 exe=$(cd "$(dirname "$exe")" && pwd)/$(basename "$exe")
 shift || true
-benchmarks=${*:-G1 G2 G3 G4 G5}
+benchmarks=${*:-G1 G2 G3 G4 G5 biaxial}
 data=$root/doc/data
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
@@ -253,7 +255,11 @@ end"; then
       /usr/bin/python3 "$root/doc/scripts/bishop_slope.py" critical-cohesion 30 |
         sed 's/^/Bishop, phi = 30 deg: /' | tee -a "$data/G5-bishop.txt"
       # slope H REMEDY C: run the slope on cells of size H with cohesion C;
-      # prints "rest" or "moving" and the largest displacement.
+      # prints "slides" or "stands", "rest" or "moving" at the end, and the
+      # largest displacement. A slope stands when it has come to rest
+      # (Quasi-static end) with no point displaced by more than 1 m (a tenth
+      # of its height); a failing slope runs out by metres and may come to
+      # rest at the toe.
       slope() {
         run G5-slope.prm "set Volumetric locking remedy = $2
 subsection Mesh
@@ -268,32 +274,97 @@ subsection Output
  set Time interval = 15
  set Write particle CSV = true
 end"
-        local last state
+        local last state displacement verdict
         last=$(ls run/particles-*.csv | tail -1)
         state=moving
         grep -q "at rest at t" run.log && state=rest
-        echo "$state $(awk -F, 'NR > 1 { u = sqrt($6 * $6 + $7 * $7); if (u > m) m = u } END { printf "%.3f", m }' "$last")"
+        displacement=$(awk -F, 'NR > 1 { u = sqrt($6 * $6 + $7 * $7); if (u > m) m = u } END { printf "%.3f", m }' "$last")
+        verdict=slides
+        if [ $state = rest ] && awk "BEGIN{exit !($displacement < 1)}"; then verdict=stands; fi
+        echo "cells $1 m, $2, c = $3 Pa: $verdict ($state, largest displacement $displacement m)" >&2
+        echo "$1 $2 $3 $verdict $state $displacement" >> "$data/G5-runs.dat"
+        echo "$verdict $state $displacement"
       }
+      echo "# cells remedy cohesion verdict state_at_end largest_displacement (m, Pa; every run of the sweep)" > "$data/G5-runs.dat"
       {
-        echo "# cells remedy c=0_state c=0_largest_displacement critical_cohesion_low critical_cohesion_high (Pa; the slope moves at low, rests at high)"
+        echo "# cells remedy c=0_verdict c=0_state c=0_largest_displacement critical_cohesion_low critical_cohesion_high (Pa; the slope slides at low, stands at high)"
         for h in 1 0.5 0.25; do
           for remedy in none F-bar; do
-            read -r state0 u0 < <(slope $h $remedy 0)
+            read -r verdict0 state0 u0 < <(slope $h $remedy 0)
             low=0
             high=3000
             for _ in 1 2 3 4 5 6; do
               c=$(awk "BEGIN{print ($low + $high) / 2}")
-              read -r state u < <(slope $h $remedy "$c")
-              if [ "$state" = rest ]; then high=$c; else low=$c; fi
-              if [ "$h" = 0.25 ] && [ $remedy = F-bar ] && [ "$state" = moving ]; then
-                awk -F, 'NR > 1 { printf "%.4g %.4g %.3g\n", $4, $5, $17 }' \
+              read -r verdict state u < <(slope $h $remedy "$c")
+              if [ "$verdict" = stands ]; then high=$c; else low=$c; fi
+              if [ "$h" = 0.25 ] && [ $remedy = F-bar ] && [ "$verdict" = slides ]; then
+                # Plastic strain of the slide nearest the critical cohesion
+                # at the points' initial positions, beside Bishop's circle.
+                awk -F, 'NR > 1 { printf "%.4g %.4g %.3g\n", $2, $3, $17 }' \
                   "$(ls run/particles-*.csv | tail -1)" > "$data/G5-plastic-strain.dat"
               fi
             done
-            echo "$h $remedy $state0 $u0 $low $high"
+            echo "$h $remedy $verdict0 $state0 $u0 $low $high"
           done
         done
       } | tee "$data/G5-critical-cohesion.dat"
+      # The band against Bishop's critical circle, column by column (0.25 m
+      # of initial x) between the crest's edge and the toe: the height of
+      # the largest plastic strain, and of the lowest point with more than
+      # 0.1 (the base of the slide), above the circle.
+      read -r xc yc rc < <(awk '/critical cohesion/ { gsub(",", ""); for (i = 1; i <= NF; ++i) if ($i == "centre") print $(i + 1), $(i + 2), $(i + 4) }' "$data/G5-bishop.txt")
+      awk -v xc="$xc" -v yc="$yc" -v r="$rc" '
+        { b = int($1 / 0.25)
+          if (!(b in m) || $3 > m[b]) { m[b] = $3; ym[b] = $2; x[b] = $1 }
+          if ($3 > 0.1 && (!(b in yl) || $2 < yl[b])) yl[b] = $2 }
+        END {
+          for (b in m) {
+            if (x[b] < 16 || x[b] > 29 || !(b in yl)) continue
+            y = yc - sqrt(r * r - (x[b] - xc) ^ 2)
+            d = ym[b] - y; e = yl[b] - y; n++
+            s += d; a += (d < 0 ? -d : d); if (d * d > dm * dm) dm = d; if (d * d <= 0.25) k++
+            t += e; if (e * e > em * em) em = e }
+          printf "largest plastic strain: mean %.2f m above the circle, mean |offset| %.2f m, largest %.2f m, %d of %d columns within 0.5 m (two cells)\n", s / n, a / n, dm, k, n
+          printf "base of the slide (plastic strain > 0.1): mean %.2f m above the circle, largest %.2f m\n", t / n, em }' \
+        "$data/G5-plastic-strain.dat" | tee "$data/G5-band-offset.txt"
+      ;;
+    biaxial)
+      echo "Biaxial test with strain softening: peak, residual, shear band"
+      {
+        echo "# cells remedy peak_load late_load(platen displacement 0.045-0.06 m) band_points band_angle slip (kN/m, deg, m; exact peak 69.28, residual 10.91)"
+        for cells in "16 20 0.1" "32 40 0.05"; do
+          read -r nx ny h <<< "$cells"
+          for remedy in F-bar none; do
+            run biaxial-softening.prm "set Volumetric locking remedy = $remedy
+subsection Mesh
+ set Subdivisions = $nx, $ny
+end
+subsection Time
+ set End time = 12
+end
+subsection Output
+ set Time interval = 0.05
+ set Write particle CSV = true
+end"
+            # Platen displacement and load (the mean over each 0.05 s).
+            awk -F, 'NR > 1 { printf "%.5f %.1f\n", -$9, -$7 }' run/statistics.csv \
+              > "$data/biaxial-load-$h-$remedy.dat"
+            last=$(ls run/particles-*.csv | tail -1)
+            if [ "$h" = 0.05 ] && [ $remedy = F-bar ]; then
+              awk -F, 'NR > 1 { printf "%.4g %.4g %.3g\n", $2, $3, $17 }' "$last" \
+                > "$data/biaxial-plastic-strain.dat"
+            fi
+            peak=$(awk '$2 > m { m = $2 } END { printf "%.2f", m / 1e3 }' "$data/biaxial-load-$h-$remedy.dat")
+            late=$(awk '$1 > 0.045 { s += $2; n++ } END { printf "%.2f", s / n / 1e3 }' "$data/biaxial-load-$h-$remedy.dat")
+            band=$(awk -F, 'NR > 1 && $17 > 0.05 && $3 > 0.1 && $3 < 1.9 {
+                n++; sx += $2; sy += $3; sxx += $2 * $2; sxy += $2 * $3 }
+              NR > 1 && $3 > 1.9 { t += $6; nt++ } NR > 1 && $3 < 0.1 { b += $6; nb++ }
+              END { s = (n * sxy - sx * sy) / (n * sxx - sx * sx); d = t / nt - b / nb
+                printf "%d %.1f %.3f", n, atan2(s < 0 ? -s : s, 1) * 45 / atan2(1, 1), d < 0 ? -d : d }' "$last")
+            echo "$h $remedy $peak $late $band"
+          done
+        done
+      } | tee "$data/biaxial-summary.dat"
       ;;
   esac
 done

@@ -103,3 +103,97 @@ set yrange [0:0.22]
 set cblabel "speed (m/s)"
 plot "data/G4-failure-speed.dat" using 1:2:3 with points pt 5 ps 0.3 palette notitle, \
      [0.0845:0.2] (0.2 - x) * tan(60 * pi / 180) with lines lw 2 lc rgb "black" title "45 + phi/2 = 60 deg from the toe"
+unset cblabel
+set size noratio
+set autoscale
+
+# G5: the slope sweep. Bishop's critical circle (phi = 30 deg held) from
+# data/G5-bishop.txt, written by bishop_slope.py.
+circle = system("awk '/critical cohesion/ { gsub(\",\", \"\"); for (i = 1; i <= NF; ++i) if ($i == \"centre\") print $(i + 1), $(i + 2), $(i + 4) }' data/G5-bishop.txt")
+xc = word(circle, 1) + 0
+yc = word(circle, 2) + 0
+rc = word(circle, 3) + 0
+c_bishop = system("awk '/critical cohesion/ { for (i = 1; i <= NF; ++i) if ($i == \"cohesion\") print $(i + 1) }' data/G5-bishop.txt") + 0
+
+set output "figures/G5-slope-sweep.png"
+set terminal pngcairo size 760,520 font ",11"
+set title "G5: largest displacement at the end of each run of the sweep"
+set xlabel "cohesion c (Pa), phi = 30 deg"
+set ylabel "largest displacement (m)"
+set logscale y
+set xrange [0:3000]
+set yrange [0.05:20]
+set key top right
+set arrow 1 from c_bishop, 0.05 to c_bishop, 20 nohead dt 2 lc rgb "black"
+set label 1 "Bishop" at c_bishop + 40, 10
+set arrow 2 from 0, 1 to 3000, 1 nohead dt 3 lc rgb "gray40"
+set label 2 "slides above 1 m" at 2000, 1.25
+plot for [h in "1 0.5 0.25"] \
+       "< awk '$1 == ".h." && $2 == \"F-bar\"' data/G5-runs.dat | sort -g -k3" using 3:6 with linespoints pt 7 title "F-bar, ".h." m cells", \
+     for [h in "1 0.5 0.25"] \
+       "< awk '$1 == ".h." && $2 == \"none\"' data/G5-runs.dat | sort -g -k3" using 3:6 with linespoints pt 6 dt 2 title "none, ".h." m cells"
+unset logscale y
+unset arrow
+unset label
+set autoscale
+
+set output "figures/G5-shear-band.png"
+set terminal pngcairo size 900,420 font ",11"
+set title "G5: equivalent plastic strain of the slide nearest the critical cohesion (0.25 m cells, F-bar), at the initial positions"
+set xlabel "x (m)"
+set ylabel "y (m)"
+set size ratio -1
+set xrange [0:45]
+set yrange [0:16]
+set cbrange [0:1]
+set cblabel "equivalent plastic strain"
+set key bottom left opaque
+plot "data/G5-plastic-strain.dat" using 1:2:3 with points pt 5 ps 0.25 palette notitle, \
+     [xc - rc:xc + rc] (yc - sqrt(rc**2 - (x - xc)**2) < (x < 15 ? 15 : x < 30 ? 15 - (x - 15) / 1.5 : 5) ? yc - sqrt(rc**2 - (x - xc)**2) : 1/0) \
+       with lines lw 2 lc rgb "black" title "Bishop's critical circle, c = 862 Pa"
+unset cblabel
+unset cbrange
+set size noratio
+set autoscale
+
+# The biaxial test with strain softening (prm/biaxial-softening.prm).
+set output "figures/biaxial-load.png"
+set terminal pngcairo size 760,520 font ",11"
+set title "Biaxial test, softening Mohr-Coulomb: platen load (mean over 0.05 s)"
+set xlabel "platen displacement (m)"
+set ylabel "load (kN/m)"
+set xrange [0:0.06]
+set yrange [0:80]
+set key top right
+peak = 2 * 20 * cos(pi / 6) / (1 - sin(pi / 6))
+residual = 2 * 5 * cos(5 * pi / 180) / (1 - sin(5 * pi / 180))
+plot "data/biaxial-load-0.05-F-bar.dat" using 1:($2 / 1e3) with lines lw 2 title "0.05 m cells, F-bar", \
+     "data/biaxial-load-0.1-F-bar.dat" using 1:($2 / 1e3) with lines lw 2 title "0.1 m cells, F-bar", \
+     "data/biaxial-load-0.05-none.dat" using 1:($2 / 1e3) with lines dt 2 title "0.05 m cells, no remedy", \
+     "data/biaxial-load-0.1-none.dat" using 1:($2 / 1e3) with lines dt 2 title "0.1 m cells, no remedy", \
+     peak with lines dt 3 lc rgb "black" title "peak 2 c cos(phi) / (1 - sin(phi))", \
+     residual with lines dt 4 lc rgb "gray30" title "residual 2 c_r cos(phi_r) / (1 - sin(phi_r))"
+set autoscale
+
+set output "figures/biaxial-shear-band.png"
+set terminal pngcairo size 560,760 font ",11"
+set title "Biaxial test: plastic strain at the end (0.05 m cells),\nat the initial positions"
+set xlabel "x (m)"
+set ylabel "y (m)"
+set size ratio -1
+set xrange [0:1]
+set yrange [0:2]
+set cbrange [0:0.5]
+set cblabel "equivalent plastic strain"
+set key bottom right opaque
+stats "< awk '$3 > 0.05 && $2 > 0.1 && $2 < 1.9' data/biaxial-plastic-strain.dat" using 1:2 nooutput
+xm = STATS_mean_x
+ym = STATS_mean_y
+direction = STATS_slope > 0 ? 1 : -1
+plot "data/biaxial-plastic-strain.dat" using 1:2:3 with points pt 5 ps 0.4 palette notitle, \
+     ym + direction * tan(45 * pi / 180) * (x - xm) with lines lw 2 dt 2 lc rgb "black" title "Roscoe 45 deg", \
+     ym + direction * tan(60 * pi / 180) * (x - xm) with lines lw 2 dt 3 lc rgb "black" title "Coulomb 60 deg"
+unset cblabel
+unset cbrange
+set size noratio
+set autoscale
