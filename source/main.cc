@@ -166,6 +166,12 @@ main(int argc, char *argv[])
       const bool overwrite = overwrite_option != arguments.end();
       if (overwrite)
         arguments.erase(overwrite_option);
+      AssertThrow(std::find(arguments.begin(),
+                            arguments.end(),
+                            "--overwrite") == arguments.end(),
+                  dealii::ExcMessage("--overwrite is given twice; once is "
+                                     "enough.\n" +
+                                     usage));
       std::string resume_directory;
       const auto  resume_option =
         std::find(arguments.begin(), arguments.end(), "--resume");

@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cctype>
+#include <sstream>
+#include <tuple>
 
 namespace MpmOtm
 {
@@ -78,6 +80,42 @@ namespace MpmOtm
     result.materials  = names_in(prm, "Materials");
     result.bodies     = names_in(prm, "Bodies");
     result.boundaries = names_in(prm, "Boundaries");
+
+    // The subsections the text opens, as "<kind> <name>" (comments and
+    // surplus spaces removed). A file that includes others may define them
+    // there: it is not checked.
+    std::vector<std::string> opened;
+    bool                     includes = false;
+    std::istringstream       lines(parameter_text);
+    std::string              line;
+    while (std::getline(lines, line))
+      {
+        const auto words =
+          Utilities::split_string_list(line.substr(0, line.find('#')), ' ');
+        std::vector<std::string> nonempty;
+        for (const auto &word : words)
+          if (!word.empty())
+            nonempty.push_back(word);
+        if (nonempty.size() == 3 && nonempty[0] == "subsection")
+          opened.push_back(nonempty[1] + " " + nonempty[2]);
+        includes = includes || (!nonempty.empty() && nonempty[0] == "include");
+      }
+    if (includes)
+      return result;
+    for (const auto &[kind, entry, names] :
+         {std::make_tuple("Material", "Materials", &result.materials),
+          std::make_tuple("Body", "Bodies", &result.bodies),
+          std::make_tuple("Boundary", "Boundaries", &result.boundaries)})
+      for (const auto &name : *names)
+        AssertThrow(std::find(opened.begin(),
+                              opened.end(),
+                              std::string(kind) + " " + name) != opened.end(),
+                    ExcMessage(std::string(entry) + " lists <" + name +
+                               ">, but there is no subsection <" + kind + " " +
+                               name +
+                               "> defining it (it would run on the "
+                               "defaults): add the subsection or remove the "
+                               "name."));
     return result;
   }
 } // namespace MpmOtm

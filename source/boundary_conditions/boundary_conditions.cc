@@ -224,7 +224,17 @@ namespace MpmOtm
         const std::string path = "Boundary " + condition.name + "/";
         condition.functions.clear();
         if (condition.on_box)
-          find_box_functions(condition);
+          {
+            find_box_functions(condition);
+            AssertThrow(
+              Utilities::MPI::sum(condition.functions.size(), communicator) > 0,
+              ExcMessage(path +
+                         "Box lower corner, Box upper corner: the box holds "
+                         "no node of the grid (linear, max-ent: no vertex; "
+                         "B-splines: no Greville point), so the condition "
+                         "would act on nothing; enlarge the box to hold the "
+                         "nodes it should act on."));
+          }
         else
           {
             for (const auto id : condition.boundary_ids)
@@ -238,15 +248,18 @@ namespace MpmOtm
             // for slip and friction.
             std::vector<Tensor<1, dim>> normals;
             std::vector<Point<dim>>     centers;
+            std::vector<double> faces_per_id(condition.boundary_ids.size(), 0.);
             for (const auto &cell : triangulation.active_cell_iterators())
               if (cell->is_locally_owned())
                 for (const unsigned int f : cell->face_indices())
-                  if (cell->face(f)->at_boundary() &&
-                      std::find(condition.boundary_ids.begin(),
-                                condition.boundary_ids.end(),
-                                cell->face(f)->boundary_id()) !=
-                        condition.boundary_ids.end())
+                  if (cell->face(f)->at_boundary())
                     {
+                      const auto id = std::find(condition.boundary_ids.begin(),
+                                                condition.boundary_ids.end(),
+                                                cell->face(f)->boundary_id());
+                      if (id == condition.boundary_ids.end())
+                        continue;
+                      faces_per_id[id - condition.boundary_ids.begin()] += 1.;
                       normals.push_back(outward_normal<dim>(cell, f));
                       centers.push_back(cell->face(f)->center());
                     }
@@ -256,21 +269,27 @@ namespace MpmOtm
             double n_faces = normals.size();
             sum            = Utilities::MPI::sum(sum, communicator);
             n_faces        = Utilities::MPI::sum(n_faces, communicator);
-            if (!(n_faces > 0))
-              {
-                std::string ids;
-                for (const auto id : grid.boundary_ids())
-                  ids += (ids.empty() ? "" : ", ") + std::to_string(id);
-                AssertThrow(false,
-                            ExcMessage(path +
-                                       "Boundary ids: no face of the grid "
-                                       "has these ids; the grid's boundary "
-                                       "ids are " +
-                                       ids + " (box grids: the sides 0 to " +
-                                       std::to_string(2 * dim - 1) +
-                                       "; Mesh file: its physical tags, 0 "
-                                       "on untagged faces)."));
-              }
+            Utilities::MPI::sum(faces_per_id, communicator, faces_per_id);
+            // Every listed id must have faces: one without any would be
+            // a condition acting on nothing.
+            for (unsigned int i = 0; i < faces_per_id.size(); ++i)
+              if (!(faces_per_id[i] > 0))
+                {
+                  std::string ids;
+                  for (const auto id : grid.boundary_ids())
+                    ids += (ids.empty() ? "" : ", ") + std::to_string(id);
+                  AssertThrow(false,
+                              ExcMessage(
+                                path +
+                                "Boundary ids: no face of the grid "
+                                "has the id " +
+                                std::to_string(condition.boundary_ids[i]) +
+                                "; the grid's boundary ids are " + ids +
+                                " (box grids: the sides 0 to " +
+                                std::to_string(2 * dim - 1) +
+                                "; Mesh file: its physical tags, 0 on "
+                                "untagged faces)."));
+                }
             // Faces that face each other (e.g. sides 0 and 1 in one
             // condition) have no mean normal: not planar.
             const bool has_normal = sum.norm() > 1e-8 * n_faces;

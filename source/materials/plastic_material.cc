@@ -410,6 +410,11 @@ namespace MpmOtm
     AssertThrow(c >= 0. && std::isfinite(c),
                 ExcMessage(this->entry_name(model + "/Cohesion") +
                            " must be >= 0 (here " + to_text(c) + " Pa)."));
+    AssertThrow(phi_degrees > 0. || c > 0.,
+                ExcMessage(this->entry_name(model + "/Cohesion") +
+                           " = 0 with Friction angle = 0 leaves the material "
+                           "no strength at all: give a cohesion or a friction "
+                           "angle above 0."));
     FrictionalParameters parameters;
     parameters.friction_angle  = phi_degrees * M_PI / 180.;
     parameters.dilatancy_angle = psi_degrees * M_PI / 180.;
@@ -446,6 +451,11 @@ namespace MpmOtm
     const double psi_residual =
       number("Residual dilatancy angle", psi_degrees, "degrees");
     const double c_residual = number("Residual cohesion", c, "Pa");
+    AssertThrow(phi_residual > 0. || c_residual > 0.,
+                ExcMessage(this->entry_name(model + "/Residual cohesion") +
+                           " = 0 with a residual friction angle of 0 leaves "
+                           "the softened material no strength at all: give a "
+                           "residual cohesion or friction angle above 0."));
     AssertThrow(psi_residual <= phi_residual,
                 ExcMessage(
                   this->entry_name(model + "/Residual dilatancy angle") +

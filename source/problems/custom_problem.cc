@@ -159,6 +159,15 @@ namespace MpmOtm
 
 
   template <int dim>
+  bool
+  CustomProblem<dim>::defines_bodies() const
+  {
+    return true;
+  }
+
+
+
+  template <int dim>
   void
   CustomProblem<dim>::initialize(const Material<dim>    &material,
                                  const BoundingBox<dim> &box)

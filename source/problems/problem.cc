@@ -124,6 +124,15 @@ namespace MpmOtm
 
 
   template <int dim>
+  bool
+  Problem<dim>::defines_bodies() const
+  {
+    return false;
+  }
+
+
+
+  template <int dim>
   void
   Problem<dim>::initialize(const Material<dim> &, const BoundingBox<dim> &box)
   {

@@ -184,6 +184,14 @@ namespace MpmOtm
     problem_description =
       PluginRegistry<Problem<dim>>::create(prm.get("Problem"));
     problem_description->parse(prm, *materials);
+    AssertThrow(problem_description->defines_bodies() ||
+                  Utilities::trim(prm.get("Bodies")).empty(),
+                ExcMessage("Bodies = " + prm.get("Bodies") +
+                           ": bodies are the material of Problem = custom; "
+                           "Problem = " +
+                           prm.get("Problem") +
+                           " places its own. Remove the entry Bodies, or set "
+                           "Problem = custom."));
     shape_functions =
       PluginRegistry<ShapeFunctions<dim>>::create(prm.get("Shape functions"));
     shape_functions->parse_parameters(prm);

@@ -211,6 +211,16 @@ main(int argc, char **argv)
       check_rejected(model,
                      with("Residual cohesion", "0.5"),
                      "Softening strains");
+      // No strength at all, at the peak or at the residual.
+      check_rejected(model,
+                     {{"Friction angle", "0"}, {"Cohesion", "0"}},
+                     "Cohesion");
+      check_rejected(model,
+                     {{"Friction angle", "0"},
+                      {"Cohesion", "1"},
+                      {"Softening strains", "0, 0.1"},
+                      {"Residual cohesion", "0"}},
+                     "Residual cohesion");
       const auto softening_material =
         make_sand(model, softening("Residual cohesion", "0.25"));
       check(softening_material->friction_angle() == M_PI / 6.,

@@ -35,8 +35,10 @@ namespace MpmOtm
 
     /**
      * The names listed in @p parameter_text (the text of a parameter file;
-     * everything else in it is skipped). Stops on a repeated name or one
-     * that contains a character other than letters, digits, '_' and '-'.
+     * everything else in it is skipped). Stops on a repeated name, one
+     * that contains a character other than letters, digits, '_' and '-',
+     * and one whose subsection the text does not have (it would run on the
+     * defaults; not checked in a text that includes other files).
      */
     static SubsectionNames
     read(const std::string &parameter_text);

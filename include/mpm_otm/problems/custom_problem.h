@@ -39,6 +39,9 @@ namespace MpmOtm
     bool
     runs_on_any_grid() const override;
 
+    bool
+    defines_bodies() const override;
+
     void
     initialize(const Material<dim>    &material,
                const BoundingBox<dim> &grid_box) override;

@@ -146,6 +146,14 @@ namespace MpmOtm
     runs_on_any_grid() const;
 
     /**
+     * Whether the problem's material is given by the bodies of the entry
+     * "Bodies" (default: false; a benchmark places its own material and a
+     * list of bodies is refused).
+     */
+    virtual bool
+    defines_bodies() const;
+
+    /**
      * Called once the material and the background box (for a Mesh file the
      * bounding box of its vertices) are known.
      */
