@@ -72,12 +72,10 @@ namespace MpmOtm
                                peak_cone.k_cohesion / peak_cone.alpha_phi :
                                std::numeric_limits<double>::infinity();
     requested_cut_off =
-      (Utilities::trim(prm.get("Tension cut-off")) == "apex") ?
-        std::numeric_limits<double>::infinity() :
-        this->parse_tension_cut_off(prm,
-                                    "Drucker-Prager/Tension cut-off",
-                                    apex,
-                                    "the apex c cot(phi)");
+      this->parse_tension_cut_off(prm,
+                                  "Drucker-Prager/Tension cut-off",
+                                  apex,
+                                  "the apex c cot(phi)");
     prm.leave_subsection();
     peak     = make_cone(strength);
     residual = make_cone(strength.at(strength.softening_end));

@@ -87,12 +87,10 @@ namespace MpmOtm
         strength.cohesion / std::tan(strength.friction_angle) :
         std::numeric_limits<double>::infinity();
     requested_cut_off =
-      (Utilities::trim(prm.get("Tension cut-off")) == "apex") ?
-        std::numeric_limits<double>::infinity() :
-        this->parse_tension_cut_off(prm,
-                                    "Mohr-Coulomb/Tension cut-off",
-                                    apex,
-                                    "the apex c cot(phi)");
+      this->parse_tension_cut_off(prm,
+                                  "Mohr-Coulomb/Tension cut-off",
+                                  apex,
+                                  "the apex c cot(phi)");
     prm.leave_subsection();
     peak     = make_surface(strength);
     residual = make_surface(strength.at(strength.softening_end));

@@ -518,7 +518,7 @@ namespace MpmOtm
   {
     const std::string text = Utilities::trim(prm.get("Tension cut-off"));
     if (text == "apex")
-      return apex;
+      return std::numeric_limits<double>::infinity();
     const std::string allowed =
       " must be the word 'apex' or a number of Pa >= 0" +
       (std::isfinite(apex) ?

@@ -39,7 +39,7 @@ main(int argc, char **argv)
               << "subsection Quasi-static end\n set Kinetic energy ratio = "
                  "1e-6\nend\nsubsection Time\n set End time = "
               << (theta < 20. ? 2. : 0.5) << "\nend\n";
-      auto               simulator =
+      auto simulator =
         make_simulator<2>("G2-friction-block.prm", changes.str(), "output-qs");
       simulator->run();
       double sigma_yy = 0, sigma_xy = 0, volume = 0;

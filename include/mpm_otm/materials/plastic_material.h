@@ -209,8 +209,9 @@ namespace MpmOtm
      * Read the entry "Tension cut-off" of the current subsection of @p prm,
      * which is either the word "apex" (no cut-off besides the apex
      * @p apex of the yield surface; @p apex is infinite if the surface has
-     * none) or a number of Pa in [0, @p apex], and return its value (@p apex
-     * for "apex"). @p entry names the entry in messages, e.g.
+     * none) or a number of Pa in [0, @p apex], and return its value
+     * (infinite for "apex": the cut-off follows the apex, also a softened
+     * one). @p entry names the entry in messages, e.g.
      * "Drucker-Prager/Tension cut-off"; @p apex_text says what the apex is.
      */
     double
