@@ -443,8 +443,9 @@ namespace MpmOtm
 
   template <int dim>
   void
-  OutputWriter<dim>::write_basis_picture(
-    const ShapeFunctions<dim> &shape_functions) const
+  OutputWriter<dim>::check_basis_picture(
+    const ShapeFunctions<dim> &shape_functions,
+    const MPI_Comm             communicator) const
   {
     if (powell_sabin_basis_point.empty())
       return;
@@ -455,11 +456,22 @@ namespace MpmOtm
     AssertThrow(powell_sabin_basis_point.size() == dim,
                 ExcMessage("Output/Powell-Sabin basis at needs a point with " +
                            std::to_string(dim) + " coordinates."));
-    AssertThrow(Utilities::MPI::n_mpi_processes(mpi_communicator) == 1,
+    AssertThrow(Utilities::MPI::n_mpi_processes(communicator) == 1,
                 ExcMessage("Output/Powell-Sabin basis at: the picture is "
                            "drawn in serial runs only (on more than one MPI "
                            "rank no rank holds the whole triangulation); run "
                            "without mpirun, or remove the entry."));
+  }
+
+
+
+  template <int dim>
+  void
+  OutputWriter<dim>::write_basis_picture(
+    const ShapeFunctions<dim> &shape_functions) const
+  {
+    if (powell_sabin_basis_point.empty())
+      return;
     Point<dim> point;
     for (unsigned int d = 0; d < dim; ++d)
       point[d] = powell_sabin_basis_point[d];

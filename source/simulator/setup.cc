@@ -162,6 +162,10 @@ namespace MpmOtm
                 << ", or Time step = auto (manual, 'Time step').";
         AssertThrow(false, ExcMessage(message.str()));
       }
+    AssertThrow(end_time / time_step < 1e9,
+                ExcMessage("Time/End time / Time/Time step is above 1e9 time "
+                           "steps; check both entries."));
+    output->check_basis_picture(*shape_functions, communicator);
     grid_motion->initialize(*grid,
                             *shape_functions,
                             *system,

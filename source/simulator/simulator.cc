@@ -74,9 +74,6 @@ namespace MpmOtm
                                locking_remedy.get(),
                                timer);
 
-      AssertThrow(end_time / time_step < 1e9,
-                  ExcMessage("Time/End time / Time/Time step is above 1e9 time "
-                             "steps; check both entries."));
       const unsigned int n_steps =
         static_cast<unsigned int>(std::ceil(end_time / time_step - 1e-8));
       Timer wall_clock(communicator, true);

@@ -121,10 +121,20 @@ namespace MpmOtm
     directory() const;
 
     /**
+     * Stop on every rank if Output/Powell-Sabin basis at names a point but
+     * no picture can be drawn: @p shape_functions draw none (only
+     * Powell-Sabin splines do), the point has the wrong number of
+     * coordinates, or the run on @p communicator has more than one rank.
+     * Called before anything is written.
+     */
+    void
+    check_basis_picture(const ShapeFunctions<dim> &shape_functions,
+                        const MPI_Comm             communicator) const;
+
+    /**
      * If Output/Powell-Sabin basis at names a point: write the family's
      * picture of its functions near it (ShapeFunctions::write_basis_picture(),
-     * powell-sabin-basis.vtu) on the first rank. Stops on every rank unless
-     * @p shape_functions draw one (Powell-Sabin splines).
+     * powell-sabin-basis.vtu). check_basis_picture() has accepted the entry.
      */
     void
     write_basis_picture(const ShapeFunctions<dim> &shape_functions) const;
