@@ -15,6 +15,7 @@
 #include <mpm_otm/grid/gmsh_file.h>
 
 #include <algorithm>
+#include <boost/crc.hpp>
 #include <cmath>
 #include <iomanip>
 #include <limits>
@@ -199,8 +200,39 @@ namespace MpmOtm
         map = std::make_unique<MappingFE<dim>>(FE_SimplexP<dim>(1));
       }
     set_boundary_ids();
+    compute_fingerprint();
     if (simplex || dim == 1)
       distribute(communicator);
+  }
+
+
+
+  template <int dim>
+  void
+  BackgroundGrid<dim>::compute_fingerprint()
+  {
+    boost::crc_32_type crc;
+    for (const auto &cell : tria->cell_iterators_on_level(0))
+      {
+        for (const unsigned int v : cell->vertex_indices())
+          crc.process_bytes(&cell->vertex(v)[0], dim * sizeof(double));
+        for (const unsigned int f : cell->face_indices())
+          if (cell->at_boundary(f))
+            {
+              const types::boundary_id id = cell->face(f)->boundary_id();
+              crc.process_bytes(&id, sizeof(id));
+            }
+      }
+    grid_fingerprint = crc.checksum();
+  }
+
+
+
+  template <int dim>
+  std::uint32_t
+  BackgroundGrid<dim>::fingerprint() const
+  {
+    return grid_fingerprint;
   }
 
 
@@ -239,6 +271,7 @@ namespace MpmOtm
                 upper[d] = std::max(upper[d], tria->get_vertices()[v][d]);
               }
         bounding_box = BoundingBox<dim>(std::make_pair(lower, upper));
+        compute_fingerprint();
         if (simplex)
           distribute(communicator);
       }

@@ -7,6 +7,7 @@
 
 #include <boost/archive/binary_iarchive.hpp>
 #include <boost/archive/binary_oarchive.hpp>
+#include <boost/crc.hpp>
 #include <boost/serialization/map.hpp>
 #include <boost/serialization/string.hpp>
 #include <boost/serialization/vector.hpp>
@@ -15,6 +16,8 @@
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <set>
+#include <sstream>
 
 namespace MpmOtm
 {
@@ -23,7 +26,81 @@ namespace MpmOtm
     namespace fs = std::filesystem;
 
     /// First words of shared.bin; a new layout gets a new number.
-    const std::string format = "mpm-otm checkpoint 1";
+    const std::string format = "mpm-otm checkpoint 2";
+
+    /// The size and CRC-32 of a file, as recorded in shared.bin.
+    struct FileChecksum
+    {
+      std::uint64_t size = 0;
+      std::uint32_t crc  = 0;
+
+      template <class Archive>
+      void
+      serialize(Archive &archive, const unsigned int)
+      {
+        archive &size &crc;
+      }
+    };
+
+    /// The size and CRC-32 of the file @p name; size -1 if it cannot be
+    /// read.
+    FileChecksum
+    checksum_of(const std::string &name)
+    {
+      FileChecksum       result;
+      std::ifstream      file(name, std::ios::binary);
+      boost::crc_32_type crc;
+      std::vector<char>  buffer(1 << 20);
+      while (file)
+        {
+          file.read(buffer.data(), buffer.size());
+          crc.process_bytes(buffer.data(), file.gcount());
+          result.size += file.gcount();
+        }
+      if (!file.eof())
+        result.size = static_cast<std::uint64_t>(-1);
+      result.crc = crc.checksum();
+      return result;
+    }
+
+    /// Every entry of @p prm by its path ("Time/End time").
+    std::map<std::string, std::string>
+    entries_of(const ParameterHandler &prm)
+    {
+      std::ostringstream listing;
+      prm.print_parameters(listing, ParameterHandler::ShortPRM);
+      std::istringstream                 lines(listing.str());
+      std::map<std::string, std::string> entries;
+      std::vector<std::string>           path;
+      std::string                        line;
+      while (std::getline(lines, line))
+        {
+          line = Utilities::trim(line);
+          if (line.rfind("subsection ", 0) == 0)
+            path.push_back(Utilities::trim(line.substr(11)));
+          else if (line == "end" && !path.empty())
+            path.pop_back();
+          else if (line.rfind("set ", 0) == 0)
+            {
+              const auto  equals = line.find('=');
+              std::string name;
+              for (const auto &section : path)
+                name += section + "/";
+              name += Utilities::trim(line.substr(4, equals - 4));
+              entries[name] = Utilities::trim(line.substr(equals + 1));
+            }
+        }
+      return entries;
+    }
+
+    /// Whether the entry @p name may differ between a run and its resumed
+    /// continuation: it does not change the result.
+    bool
+    may_change_on_resume(const std::string &name)
+    {
+      return name.rfind("Output/", 0) == 0 ||
+             name.rfind("Checkpoint/", 0) == 0 || name == "Time/End time";
+    }
 
     std::string
     rank_file(const std::string &checkpoint,
@@ -61,7 +138,9 @@ namespace MpmOtm
                       "Write a checkpoint every this many time steps (0: "
                       "none), into checkpoint-NNNNN in Output/Directory. "
                       "mpm-otm --resume DIRECTORY continues the run from the "
-                      "newest one, on any number of MPI ranks.");
+                      "newest one, on any number of MPI ranks; its "
+                      "parameters.prm may then differ from the run's only in "
+                      "Time/End time and the Output and Checkpoint entries.");
     prm.declare_entry("Wall-clock interval",
                       "0",
                       Patterns::Double(0),
@@ -88,6 +167,19 @@ namespace MpmOtm
     minutes       = prm.get_double("Wall-clock interval");
     n_kept        = prm.get_integer("Number kept");
     prm.leave_subsection();
+    parameters = entries_of(prm);
+    prm.enter_subsection("Time");
+    end_time = prm.get_double("End time");
+    prm.leave_subsection();
+  }
+
+
+
+  template <int dim>
+  void
+  Checkpoint<dim>::set_grid_fingerprint(const std::uint32_t fingerprint)
+  {
+    grid_fingerprint = fingerprint;
   }
 
 
@@ -160,17 +252,33 @@ namespace MpmOtm
     }
     stop_if_any_rank_failed(communicator, problem, "", advice);
 
+    // The checksums of every rank's files, read back from the disk.
+    const auto checksums = Utilities::MPI::gather(
+      communicator,
+      std::vector<FileChecksum>{
+        checksum_of(rank_file(temporary, "points", rank)),
+        checksum_of(rank_file(temporary, "state", rank))},
+      0);
+
     if (rank == 0)
       {
         const std::string shared_file = temporary + "/shared.bin";
         {
-          std::ofstream file(shared_file, std::ios::binary);
+          std::ostringstream contents;
           {
-            boost::archive::binary_oarchive archive(file);
+            boost::archive::binary_oarchive archive(contents);
             const unsigned int              dimension = dim;
             archive << format << dimension << step << time << n_ranks
+                    << parameters << grid_fingerprint << checksums
                     << state.shared_entries;
           }
+          const std::string  bytes = contents.str();
+          boost::crc_32_type crc;
+          crc.process_bytes(bytes.data(), bytes.size());
+          const std::uint32_t trailer = crc.checksum();
+          std::ofstream       file(shared_file, std::ios::binary);
+          file.write(bytes.data(), bytes.size());
+          file.write(reinterpret_cast<const char *>(&trailer), sizeof(trailer));
           file.close();
           if (!file)
             problem = write_failure(shared_file);
@@ -241,34 +349,157 @@ namespace MpmOtm
   Checkpoint<dim>::read(const std::string   &checkpoint,
                         MaterialPoints<dim> &material_points,
                         CheckpointState     &state,
-                        const MPI_Comm       communicator)
+                        const MPI_Comm       communicator) const
   {
     const unsigned int rank    = Utilities::MPI::this_mpi_process(communicator);
     const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(communicator);
-    unsigned int       step    = 0;
-    double             time    = 0;
-    unsigned int       saved_ranks = 0;
-    std::string        problem;
+    const std::string  shared_file = checkpoint + "/shared.bin";
+    const std::string  damaged =
+      " The checkpoint is damaged (a disk error, or a file changed or copied "
+      "in from elsewhere). Resume from another checkpoint (remove <" +
+      checkpoint +
+      ">, and --resume takes the newest of the others) or start "
+      "anew. ";
+    unsigned int                           step        = 0;
+    double                                 time        = 0;
+    unsigned int                           saved_ranks = 0;
+    std::map<std::string, std::string>     saved_parameters;
+    std::uint32_t                          saved_grid = 0;
+    std::vector<std::vector<FileChecksum>> checksums;
+    std::string                            problem;
+
+    // shared.bin: its own checksum first, then its contents.
+    std::string bytes;
+    {
+      std::ifstream      file(shared_file, std::ios::binary);
+      std::ostringstream contents;
+      contents << file.rdbuf();
+      bytes = contents.str();
+    }
+    std::uint32_t trailer = 0;
+    if (bytes.size() >= sizeof(trailer))
+      {
+        std::memcpy(&trailer,
+                    bytes.data() + bytes.size() - sizeof(trailer),
+                    sizeof(trailer));
+        bytes.resize(bytes.size() - sizeof(trailer));
+      }
+    boost::crc_32_type crc;
+    crc.process_bytes(bytes.data(), bytes.size());
+    if (bytes.empty() || crc.checksum() != trailer)
+      problem = "<" + shared_file + "> does not match its checksum." + damaged;
+    else
+      try
+        {
+          std::istringstream              contents(bytes);
+          boost::archive::binary_iarchive archive(contents);
+          std::string                     saved_format;
+          unsigned int                    dimension = 0;
+          archive >> saved_format;
+          if (saved_format != format)
+            problem =
+              "<" + shared_file +
+              "> was written by another version of mpm-otm. Start the run anew. ";
+          else
+            {
+              archive >> dimension >> step >> time >> saved_ranks >>
+                saved_parameters >> saved_grid >> checksums >>
+                state.shared_entries;
+              if (dimension != dim)
+                problem = "<" + checkpoint + "> is of a " +
+                          std::to_string(dimension) +
+                          "D run. Start the run anew. ";
+              else if (checksums.size() != saved_ranks)
+                problem = "<" + shared_file + "> is inconsistent." + damaged;
+            }
+        }
+      catch (const std::exception &error)
+        {
+          problem = "<" + shared_file + "> cannot be read (" + error.what() +
+                    ")." + damaged;
+        }
+
+    // The identity: the same parameters, except what does not change the
+    // result, and the same grid.
+    if (problem.empty())
+      {
+        std::vector<std::string> differences;
+        std::set<std::string>    names;
+        for (const auto &entries : {parameters, saved_parameters})
+          for (const auto &[name, value] : entries)
+            names.insert(name);
+        for (const auto &name : names)
+          {
+            const auto        now    = parameters.find(name);
+            const auto        before = saved_parameters.find(name);
+            const std::string value_now =
+              now == parameters.end() ? "(none)" : "<" + now->second + ">";
+            const std::string value_before = before == saved_parameters.end() ?
+                                               "(none)" :
+                                               "<" + before->second + ">";
+            if (value_now != value_before && !may_change_on_resume(name))
+              differences.push_back(name + " = " + value_now +
+                                    " (the run that wrote it: " + value_before +
+                                    ")");
+          }
+        if (!differences.empty())
+          {
+            problem = "it was written by a run with other parameters than "
+                      "the parameters.prm of the resumed run: ";
+            for (unsigned int k = 0; k < differences.size() && k < 10; ++k)
+              problem += (k > 0 ? "; " : "") + differences[k];
+            if (differences.size() > 10)
+              problem +=
+                "; and " + std::to_string(differences.size() - 10) + " more";
+            problem +=
+              ". A resumed run continues the run it was started as: only "
+              "Time/End time (to a time after the checkpoint's) and the "
+              "entries of the subsections Output and Checkpoint may change. "
+              "Restore the entries, or start a new run with them. ";
+          }
+        else if (saved_grid != grid_fingerprint)
+          problem = "it was written on another grid than the resumed run's "
+                    "(the same parameters, but the cells or boundary ids "
+                    "differ: a changed Mesh/Mesh file?). Restore the grid or "
+                    "start a new run on it. ";
+        else if (!(end_time > time))
+          problem = "Time/End time = " + parameters.at("Time/End time") +
+                    " is not after the checkpoint's time " +
+                    std::to_string(time) + ". ";
+      }
+    // What every rank found alike, rank 0 tells.
+    const std::string problem_of_rank_0 =
+      Utilities::MPI::broadcast(communicator, problem, 0);
+    if (rank > 0 && problem == problem_of_rank_0)
+      problem.clear();
+    const bool identity_confirmed =
+      Utilities::MPI::max(problem.empty() ? 0 : 1, communicator) == 0;
+
+    // Every rank's files against their checksums, shared among the ranks.
+    if (identity_confirmed)
+      for (unsigned int r = rank; r < saved_ranks; r += n_ranks)
+        for (const auto &[kind, k] :
+             {std::pair<std::string, unsigned int>{"points", 0}, {"state", 1}})
+          {
+            const std::string file   = rank_file(checkpoint, kind, r);
+            const auto        actual = checksum_of(file);
+            if ((actual.size != checksums[r][k].size ||
+                 actual.crc != checksums[r][k].crc) &&
+                problem.empty())
+              problem = "<" + file +
+                        "> does not match the size and checksum that " +
+                        shared_file + " records for it." + damaged;
+          }
+
+    stop_if_any_rank_failed(communicator,
+                            problem,
+                            "Cannot resume from <" + checkpoint + ">: ",
+                            "");
+
     try
       {
-        std::ifstream file(checkpoint + "/shared.bin", std::ios::binary);
-        boost::archive::binary_iarchive archive(file);
-        std::string                     saved_format;
-        unsigned int                    dimension = 0;
-        archive >> saved_format;
-        if (saved_format != format)
-          problem = "<" + checkpoint +
-                    "/shared.bin> was written by another version of mpm-otm. ";
-        else
-          {
-            archive >> dimension >> step >> time >> saved_ranks >>
-              state.shared_entries;
-            if (dimension != dim)
-              problem = "<" + checkpoint + "> is of a " +
-                        std::to_string(dimension) + "D run. ";
-          }
         state.saved_parts.resize(saved_ranks);
-        for (unsigned int r = 0; r < saved_ranks && problem.empty(); ++r)
+        for (unsigned int r = 0; r < saved_ranks; ++r)
           {
             std::ifstream part(rank_file(checkpoint, "state", r),
                                std::ios::binary);
@@ -278,13 +509,13 @@ namespace MpmOtm
       }
     catch (const std::exception &error)
       {
-        problem =
-          "<" + checkpoint + "> cannot be read (" + error.what() + "). ";
+        problem = "a state file cannot be read (" + std::string(error.what()) +
+                  ")." + damaged;
       }
     stop_if_any_rank_failed(communicator,
                             problem,
-                            "Cannot resume from the checkpoint: ",
-                            "Resume from another checkpoint or start anew.");
+                            "Cannot resume from <" + checkpoint + ">: ",
+                            "");
     state.set_reader(rank, saved_ranks == n_ranks);
 
     std::vector<std::string> point_files;

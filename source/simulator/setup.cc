@@ -34,6 +34,7 @@ namespace MpmOtm
   Simulator<dim>::setup(const ParameterHandler &prm, const bool resume)
   {
     grid->create(communicator, grid_motion->moves_vertices());
+    checkpoint->set_grid_fingerprint(grid->fingerprint());
 
     problem_description->initialize(materials->default_material(), grid->box());
     if (grid_motion->moves_vertices() && grid->is_box())
@@ -207,10 +208,7 @@ namespace MpmOtm
           Checkpoint<dim>::newest(output->directory(), communicator);
         resumed_state = std::make_unique<CheckpointState>();
         std::tie(resumed_step, current_time) =
-          Checkpoint<dim>::read(resumed_from,
-                                *points,
-                                *resumed_state,
-                                communicator);
+          checkpoint->read(resumed_from, *points, *resumed_state, communicator);
         grid_motion->load(*resumed_state);
         shape_functions->load(*resumed_state);
         system->load(*resumed_state);

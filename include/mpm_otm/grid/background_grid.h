@@ -8,6 +8,7 @@
 #include <deal.II/fe/mapping.h>
 #include <deal.II/grid/tria.h>
 
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -154,6 +155,15 @@ namespace MpmOtm
     unsigned int
     coarse_vertex_index(const unsigned int vertex) const;
 
+    /**
+     * A CRC-32 of the grid as created, the same on every rank and for every
+     * number of ranks: of its cells' vertices and its boundary faces' ids,
+     * in the order of the coarse mesh. A checkpoint records it, so that a
+     * run resumed on another grid (a changed Mesh file) is refused.
+     */
+    std::uint32_t
+    fingerprint() const;
+
   private:
     /**
      * Build the triangulation and mapping of the Mesh file.
@@ -177,6 +187,13 @@ namespace MpmOtm
     set_boundary_ids();
 
     /**
+     * Compute fingerprint() from the complete coarse triangulation, which
+     * every rank holds before distribute().
+     */
+    void
+    compute_fingerprint();
+
+    /**
      * On more than one rank, replace the serial triangulation of a simplex
      * or 1D grid (filled, with boundary ids) by a fully distributed one.
      */
@@ -194,6 +211,7 @@ namespace MpmOtm
      * coarse_vertex_index() of every vertex; empty where they agree.
      */
     std::vector<unsigned int> coarse_vertex;
+    std::uint32_t             grid_fingerprint = 0;
   };
 } // namespace MpmOtm
 

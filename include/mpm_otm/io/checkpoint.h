@@ -7,6 +7,8 @@
 #include <mpm_otm/base/checkpoint_state.h>
 
 #include <chrono>
+#include <cstdint>
+#include <map>
 #include <string>
 
 namespace MpmOtm
@@ -24,13 +26,20 @@ namespace MpmOtm
    *    that rank sums over them (MaterialPoints::write_points());
    *  - state-R.bin: rank R's part of the run's state (CheckpointState);
    *  - shared.bin: the state that is the same on every rank, the step, the
-   *    time and the number of ranks;
+   *    time and the number of ranks, the identity of the run (the value of
+   *    every parameter and a fingerprint of the initial grid) and the size
+   *    and CRC-32 of every rank's files; it ends with its own CRC-32;
    *  - info.txt: the same for people.
    * It is written as checkpoint-NNNNN.tmp and renamed when every rank's
    * files are complete, so that a run killed while writing leaves the
    * previous checkpoint intact; only the newest `Number kept` are kept.
-   * Resuming reads the newest complete checkpoint on any number of ranks:
-   * every rank reads every rank's files and keeps the points of its cells.
+   * Resuming reads the newest complete checkpoint on any number of ranks.
+   * Before anything is decoded or any output removed, it checks every
+   * file against its checksum and the identity against the resumed run's
+   * (parameters.prm may differ only in Time/End time and the subsections
+   * Output and Checkpoint), and refuses with a message naming the file or
+   * the entries. Then every rank reads every rank's files and keeps the
+   * points of its cells.
    * On the number of ranks that wrote it, the resumed run repeats the sums
    * of the interrupted one in the same order and so continues bit by bit.
    */
@@ -49,6 +58,14 @@ namespace MpmOtm
      */
     void
     parse_parameters(ParameterHandler &prm);
+
+    /**
+     * Take the fingerprint of the run's grid (BackgroundGrid::fingerprint()),
+     * which every checkpoint records and read() compares. Call before
+     * write() or read().
+     */
+    void
+    set_grid_fingerprint(const std::uint32_t fingerprint);
 
     /**
      * Whether a checkpoint is due after time step @p step: every
@@ -81,20 +98,27 @@ namespace MpmOtm
     newest(const std::string &directory, const MPI_Comm communicator);
 
     /**
-     * Read the checkpoint @p checkpoint: replace the points of
-     * @p material_points by its points, fill @p state and return the step
-     * and time after which it was written. Collective.
+     * Read the checkpoint @p checkpoint: check its files and its identity
+     * (see the class), replace the points of @p material_points by its
+     * points, fill @p state and return the step and time after which it was
+     * written. Collective.
      */
-    static std::pair<unsigned int, double>
+    std::pair<unsigned int, double>
     read(const std::string   &checkpoint,
          MaterialPoints<dim> &material_points,
          CheckpointState     &state,
-         const MPI_Comm       communicator);
+         const MPI_Comm       communicator) const;
 
   private:
     unsigned int step_interval = 0;
     double       minutes       = 0;
     unsigned int n_kept        = 2;
+    /// Every entry of the parameters, by its path ("Time/End time").
+    std::map<std::string, std::string> parameters;
+    /// The end time of this run (Time/End time).
+    double end_time = 0;
+    /// CRC-32 of the grid (set_grid_fingerprint()).
+    std::uint32_t grid_fingerprint = 0;
     /// When the run started or the last checkpoint was written.
     std::chrono::steady_clock::time_point last_write =
       std::chrono::steady_clock::now();
