@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -185,7 +186,8 @@ main(int argc, char *argv[])
                         usage));
           resume_directory = arguments[1];
           AssertThrow(
-            std::ifstream(resume_directory + "/parameters.prm").good(),
+            std::filesystem::is_regular_file(resume_directory +
+                                             "/parameters.prm"),
             dealii::ExcMessage("--resume: <" + resume_directory +
                                "> holds no parameters.prm; give the Output/"
                                "Directory of the run to continue.\n" +

@@ -1,4 +1,6 @@
 #include <deal.II/base/symmetric_tensor.h>
+#include <deal.II/lac/solver_cg.h>
+#include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/tridiagonal_matrix.h>
 
 #include <mpm_otm/algorithms/stable_time_step.h>
@@ -6,6 +8,7 @@
 #include <mpm_otm/materials/material_library.h>
 #include <mpm_otm/shape_functions/shape_functions.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 
@@ -25,18 +28,49 @@ namespace MpmOtm
       key = key ^ (key >> 31);
       return 2. * static_cast<double>(key >> 11) / 9007199254740992. - 1.;
     }
+
+
+
+    /**
+     * A product with the identity on the @p excluded (locally owned, sorted)
+     * entries and @p product elsewhere.
+     */
+    template <typename VectorType, typename Product>
+    class ExcludingOperator
+    {
+    public:
+      ExcludingOperator(const std::vector<unsigned int> &excluded,
+                        const Product                   &product)
+        : excluded(excluded)
+        , product(product)
+      {}
+
+      void
+      vmult(VectorType &dst, const VectorType &src) const
+      {
+        product(src, dst);
+        for (const unsigned int i : excluded)
+          dst.local_element(i) = src.local_element(i);
+      }
+
+    private:
+      const std::vector<unsigned int> &excluded;
+      const Product                   &product;
+    };
   } // namespace
 
 
 
   template <int dim>
   typename StableTimeStep<dim>::Estimate
-  StableTimeStep<dim>::estimate(const MaterialPoints<dim>  &material_points,
-                                const ShapeFunctions<dim>  &shape_functions,
-                                NodalSystem<dim>           &system,
-                                MassMatrix<dim>            &mass_matrix,
-                                const MaterialLibrary<dim> &materials,
-                                const Problem<dim>         &problem)
+  StableTimeStep<dim>::estimate(
+    const MaterialPoints<dim>                        &material_points,
+    const ShapeFunctions<dim>                        &shape_functions,
+    NodalSystem<dim>                                 &system,
+    MassMatrix<dim>                                  &mass_matrix,
+    const MaterialLibrary<dim>                       &materials,
+    const Problem<dim>                               &problem,
+    const typename NodalUpdate<dim>::ParticleVelocity particle_velocity)
   {
     shape_functions.evaluate(material_points, system.partitioner(), data);
     system.assemble(material_points, data, problem, 0., true);
@@ -64,6 +98,80 @@ namespace MpmOtm
       if (system.lumped_mass.local_element(i) < 1e-6 * largest_point_mass)
         negligible.push_back(i);
 
+    // What replaces M^-1 in Lanczos for the nodal update (see the class):
+    // M^-1, 2 M^-1 - M^-1 M_C M^-1, or ((M + M_C) / 2)^-1.
+    using Velocity  = typename NodalUpdate<dim>::ParticleVelocity;
+    const bool flip = !mass_matrix.is_consistent() &&
+                      particle_velocity == Velocity::from_acceleration;
+    const bool carried_by_nodes =
+      !mass_matrix.is_consistent() &&
+      particle_velocity == Velocity::from_displacement;
+    VectorType first_solve, consistent_product;
+    first_solve.reinit(system.lumped_mass);
+    consistent_product.reinit(system.lumped_mass);
+    const auto apply_inverse_mass = [&](const unsigned int c,
+                                        const VectorType  &right_hand_side,
+                                        VectorType        &solution) {
+      const auto &constraints = system.constraints()[c];
+      if (flip)
+        {
+          mass_matrix.solve(system,
+                            data,
+                            right_hand_side,
+                            first_solve,
+                            constraints);
+          for (const unsigned int i : negligible)
+            first_solve.local_element(i) = 0.;
+          apply_consistent_mass(system, first_solve, consistent_product);
+          mass_matrix.solve(system,
+                            data,
+                            consistent_product,
+                            solution,
+                            constraints);
+          solution.sadd(-1., 2., first_solve);
+        }
+      else if (carried_by_nodes)
+        {
+          std::vector<unsigned int> excluded = negligible;
+          for (const auto &line : system.local_lines(constraints))
+            excluded.push_back(line.first);
+          std::sort(excluded.begin(), excluded.end());
+          excluded.erase(std::unique(excluded.begin(), excluded.end()),
+                         excluded.end());
+          VectorType rhs(right_hand_side);
+          for (const unsigned int i : excluded)
+            rhs.local_element(i) = 0.;
+          const auto averaged_mass = [&](const VectorType &x, VectorType &y) {
+            mass_matrix.vmult(system, data, x, y);
+            apply_consistent_mass(system, x, consistent_product);
+            y += consistent_product;
+            y *= 0.5;
+          };
+          const auto inverse_lumped_mass = [&](const VectorType &x,
+                                               VectorType       &y) {
+            for (unsigned int i = 0; i < y.locally_owned_size(); ++i)
+              y.local_element(i) =
+                x.local_element(i) / system.lumped_mass.local_element(i);
+          };
+          using Operator =
+            ExcludingOperator<VectorType, decltype(averaged_mass)>;
+          using Preconditioner =
+            ExcludingOperator<VectorType, decltype(inverse_lumped_mass)>;
+          solution          = 0.;
+          const double norm = rhs.l2_norm();
+          if (norm == 0.)
+            return;
+          SolverControl        control(1000, 1e-12 * norm, false, false);
+          SolverCG<VectorType> cg(control);
+          cg.solve(Operator(excluded, averaged_mass),
+                   solution,
+                   rhs,
+                   Preconditioner(excluded, inverse_lumped_mass));
+        }
+      else
+        mass_matrix.solve(system, data, right_hand_side, solution, constraints);
+    };
+
     std::array<VectorType, dim> q, q_old, p, p_old, r;
     for (unsigned int c = 0; c < dim; ++c)
       {
@@ -84,11 +192,7 @@ namespace MpmOtm
           {
             for (const unsigned int i : negligible)
               r[c].local_element(i) = 0.;
-            mass_matrix.solve(system,
-                              data,
-                              r[c],
-                              q[c],
-                              system.constraints()[c]);
+            apply_inverse_mass(c, r[c], q[c]);
             for (const unsigned int i : negligible)
               q[c].local_element(i) = 0.;
             r_norm_squared += q[c] * r[c];
@@ -188,6 +292,32 @@ namespace MpmOtm
       }
     for (unsigned int c = 0; c < dim; ++c)
       stiffness_product[c].compress(VectorOperation::add);
+  }
+
+
+
+  template <int dim>
+  void
+  StableTimeStep<dim>::apply_consistent_mass(const NodalSystem<dim> &system,
+                                             const VectorType       &x,
+                                             VectorType &product) const
+  {
+    x.update_ghost_values();
+    product = 0.;
+    typename ParticleShapeData<dim>::Cursor functions(data);
+    for (const double mass : system.particle_mass)
+      {
+        const auto point        = functions.next();
+        double     interpolated = 0.;
+        for (unsigned int j = 0; j < point.n; ++j)
+          interpolated += point.values[j] * x.local_element(point.indices[j]);
+        interpolated *= mass;
+        for (unsigned int j = 0; j < point.n; ++j)
+          product.local_element(point.indices[j]) +=
+            point.values[j] * interpolated;
+      }
+    product.compress(VectorOperation::add);
+    x.zero_out_ghost_values();
   }
 
 

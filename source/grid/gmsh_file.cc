@@ -6,6 +6,7 @@
 #include <mpm_otm/grid/gmsh_file.h>
 
 #include <algorithm>
+#include <filesystem>
 #include <cmath>
 #include <fstream>
 #include <limits>
@@ -90,6 +91,16 @@ namespace MpmOtm
     AssertThrow(dim == 2 || dim == 3,
                 ExcMessage("Mesh/Mesh file needs Dimension = 2 or 3; in 1D "
                            "use the box grid (Mesh/Mesh file empty)."));
+    // Opening a named pipe would wait for a writer, and a device such as
+    // /dev/zero would be read to the memory limit: only a regular file is
+    // opened.
+    std::error_code error;
+    if (std::filesystem::is_directory(filename, error))
+      fail("is a directory, not a Gmsh .msh file");
+    if (std::filesystem::exists(filename, error) &&
+        !std::filesystem::is_regular_file(filename, error))
+      fail("is not a regular file (it is a named pipe, a device or a "
+           "socket); give a Gmsh .msh file");
     std::ifstream in(filename);
     if (!in)
       fail("cannot be opened: it does not exist or is not readable (a "

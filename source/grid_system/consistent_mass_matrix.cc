@@ -501,6 +501,15 @@ namespace MpmOtm
 
 
   template <int dim>
+  bool
+  ConsistentMassMatrix<dim>::is_consistent() const
+  {
+    return true;
+  }
+
+
+
+  template <int dim>
   void
   ConsistentMassMatrix<dim>::vmult(const NodalSystem<dim>       &system,
                                    const ParticleShapeData<dim> &shape_data,

@@ -15,6 +15,15 @@ namespace MpmOtm
 
   template <int dim>
   bool
+  PartiallyLumpedMassMatrix<dim>::is_consistent() const
+  {
+    return false;
+  }
+
+
+
+  template <int dim>
+  bool
   PartiallyLumpedMassMatrix<dim>::needs_material_boundary() const
   {
     return true;

@@ -137,13 +137,15 @@ namespace MpmOtm
       locking_remedy->initialize(*shape_functions, *system, *materials);
     // The stable time step of this discretisation at the start; a larger
     // time step is rejected before anything is written.
-    const auto stable = StableTimeStep<dim>().estimate(*points,
-                                                       *shape_functions,
-                                                       *system,
-                                                       *mass_matrix,
-                                                       *materials,
-                                                       *problem_description);
-    stable_step       = stable.time_step;
+    const auto stable =
+      StableTimeStep<dim>().estimate(*points,
+                                     *shape_functions,
+                                     *system,
+                                     *mass_matrix,
+                                     *materials,
+                                     *problem_description,
+                                     nodal_update->particle_velocity());
+    stable_step = stable.time_step;
     if (automatic_time_step)
       time_step = courant_factor * stable.time_step;
     if (!(time_step <= stable.time_step))

@@ -1,6 +1,7 @@
 #ifndef mpm_otm_algorithms_stable_time_step_h
 #define mpm_otm_algorithms_stable_time_step_h
 
+#include <mpm_otm/algorithms/nodal_update.h>
 #include <mpm_otm/grid_system/mass_matrix.h>
 #include <mpm_otm/grid_system/nodal_system.h>
 #include <mpm_otm/shape_functions/particle_shape_data.h>
@@ -35,6 +36,28 @@ namespace MpmOtm
    * to round-off. Unlike the bound h / c of thesis Eq. 2.48, which holds
    * for linear functions with lumped mass in 1D, it accounts for the
    * family, its degree, the mass matrix and the dimension.
+   *
+   * With a mass matrix M other than the consistent one M_C (lumped,
+   * partially lumped), the nodal update matters, because the velocities
+   * projected from the points' momenta see the previous accelerations
+   * through S = M^-1 M_C rather than in full:
+   *  - MUSL computes the strains from the projected velocities: an
+   *    explicit scheme for M^-1 K S, whose frequencies are at most those of
+   *    M^-1 K, so 2 / omega_max above is safe;
+   *  - USL computes them from v + dt a, while the points carry
+   *    v_p + dt sum_i phi_i a_i (FLIP): stable up to 2 / omega_max with
+   *    omega_max^2 the largest eigenvalue of M^-1 K M^-1 (2 M - M_C), about
+   *    0.75 of the step above for every family;
+   *  - OTM's update moves the points with the nodal velocities, which the
+   *    next step projects again (v_p = sum_i phi_i v_i): stable up to
+   *    2 / omega_max with omega_max^2 the largest eigenvalue of
+   *    K q = lambda (M + M_C) / 2 q, about 0.8 of the step above.
+   * (Both follow from the two-step recurrences of the schemes for one
+   * mode, q'' - 2 q' + q = -dt^2 A (q' - (I - S) q) for USL, and are the
+   * limits of a numerical check on the full matrices.) Lanczos then works
+   * with M^-1 replaced by M^-1 (2 M - M_C) M^-1 = 2 M^-1 - M^-1 M_C M^-1
+   * (two solves and a product with M_C) or by ((M + M_C) / 2)^-1 (a CG
+   * solve preconditioned with the lumped mass).
    */
   template <int dim>
   class StableTimeStep
@@ -59,16 +82,19 @@ namespace MpmOtm
 
     /**
      * Estimate the stable time step of @p material_points with
-     * @p shape_functions and @p mass_matrix. Assembles @p system (its
-     * vectors are overwritten by the first step). Collective.
+     * @p shape_functions and @p mass_matrix, for a nodal update whose
+     * points' velocities follow @p particle_velocity. Assembles @p system
+     * (its vectors are overwritten by the first step). Collective.
      */
     Estimate
-    estimate(const MaterialPoints<dim>  &material_points,
-             const ShapeFunctions<dim>  &shape_functions,
-             NodalSystem<dim>           &system,
-             MassMatrix<dim>            &mass_matrix,
-             const MaterialLibrary<dim> &materials,
-             const Problem<dim>         &problem);
+    estimate(
+      const MaterialPoints<dim>                        &material_points,
+      const ShapeFunctions<dim>                        &shape_functions,
+      NodalSystem<dim>                                 &system,
+      MassMatrix<dim>                                  &mass_matrix,
+      const MaterialLibrary<dim>                       &materials,
+      const Problem<dim>                               &problem,
+      const typename NodalUpdate<dim>::ParticleVelocity particle_velocity);
 
   private:
     using VectorType = typename NodalSystem<dim>::VectorType;
@@ -82,6 +108,15 @@ namespace MpmOtm
                     const MaterialLibrary<dim>        &materials,
                     const std::array<VectorType, dim> &x,
                     std::array<VectorType, dim>       &stiffness_product) const;
+
+    /**
+     * @p product = M_C @p x on the locally owned entries, with M_C the
+     * consistent mass matrix of the points; @p x needs its ghost entries.
+     */
+    void
+    apply_consistent_mass(const NodalSystem<dim> &system,
+                          const VectorType       &x,
+                          VectorType             &product) const;
 
     ParticleShapeData<dim> data;
   };

@@ -62,6 +62,9 @@ namespace MpmOtm
     void
     parse_parameters(ParameterHandler &prm) override;
 
+    bool
+    is_consistent() const override;
+
     /**
      * Assemble the matrix from the point groups, or choose the point pass,
      * and set up the preconditioner. Collective.

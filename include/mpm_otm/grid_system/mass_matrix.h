@@ -32,6 +32,17 @@ namespace MpmOtm
     {}
 
     /**
+     * Whether the solves use the consistent matrix itself, lumped in no
+     * row. The stable time step of USL and of OTM's update depends on how
+     * the matrix of the solves differs from it (StableTimeStep).
+     */
+    virtual bool
+    is_consistent() const
+    {
+      return false;
+    }
+
+    /**
      * Whether the solves need NodalSystem::material_boundary_functions().
      */
     virtual bool

@@ -30,6 +30,9 @@ namespace MpmOtm
     declare_parameters(ParameterHandler &prm);
 
     bool
+    is_consistent() const override;
+
+    bool
     needs_material_boundary() const override;
 
     void

@@ -195,7 +195,7 @@ namespace MpmOtm
     bool   automatic_time_step = false;
     double courant_factor      = 0.5;
     /// Allowed gain of energy over the energy supplied (EnergyMonitor).
-    double energy_growth_limit = 1.;
+    double energy_growth_limit = 0.25;
     /// The stable time step found at the start.
     double stable_step  = 0;
     double current_time = 0;
