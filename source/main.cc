@@ -1,6 +1,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 
+#include <mpm_otm/base/activity.h>
 #include <mpm_otm/base/stop_signal.h>
 #include <mpm_otm/simulator/simulator.h>
 
@@ -185,13 +186,13 @@ main(int argc, char *argv[])
                         "continue, and nothing else.\n" +
                         usage));
           resume_directory = arguments[1];
-          AssertThrow(
-            std::filesystem::is_regular_file(resume_directory +
-                                             "/parameters.prm"),
-            dealii::ExcMessage("--resume: <" + resume_directory +
-                               "> holds no parameters.prm; give the Output/"
-                               "Directory of the run to continue.\n" +
-                               usage));
+          AssertThrow(std::filesystem::is_regular_file(resume_directory +
+                                                       "/parameters.prm"),
+                      dealii::ExcMessage(
+                        "--resume: <" + resume_directory +
+                        "> holds no parameters.prm; give the Output/"
+                        "Directory of the run to continue.\n" +
+                        usage));
           arguments = {resume_directory + "/parameters.prm"};
         }
       const std::string argument = arguments.empty() ? "" : arguments[0];
@@ -262,6 +263,11 @@ main(int argc, char *argv[])
       if (root)
         std::cerr << "\nmpm-otm stopped:\n    " << stop.what() << std::endl;
       return stop.exit_status();
+    }
+  catch (const std::bad_alloc &)
+    {
+      failed        = true;
+      error_message = MpmOtm::Activity::out_of_memory();
     }
   catch (const dealii::ExceptionBase &error)
     {

@@ -1,7 +1,9 @@
 #include <deal.II/base/exceptions.h>
 
+#include <mpm_otm/base/activity.h>
 #include <mpm_otm/base/exception_message.h>
 
+#include <new>
 #include <sstream>
 
 namespace MpmOtm
@@ -9,6 +11,8 @@ namespace MpmOtm
   std::string
   message_of(const std::exception &error)
   {
+    if (dynamic_cast<const std::bad_alloc *>(&error) != nullptr)
+      return Activity::out_of_memory();
     const auto *exception = dynamic_cast<const dealii::ExceptionBase *>(&error);
     if (exception == nullptr)
       return error.what();

@@ -4,12 +4,74 @@
 #include <mpm_otm/materials/material_library.h>
 #include <mpm_otm/problems/body.h>
 
+#include <algorithm>
 #include <cmath>
+#include <sstream>
 
 namespace MpmOtm
 {
   namespace
   {
+    /**
+     * Stop, naming @p entry, unless the closed polygon through @p corners
+     * is simple: no corner repeated in a row, and no two edges that do not
+     * follow each other touching or crossing. The inside of a polygon that
+     * crosses itself depends on the rule that decides it, so a body given
+     * by one is refused.
+     */
+    void
+    check_simple_polygon(const std::vector<Point<2>> &corners,
+                         const std::string           &entry)
+    {
+      const auto cross =
+        [](const Point<2> &p, const Point<2> &q, const Point<2> &r) {
+          return (q[0] - p[0]) * (r[1] - p[1]) - (q[1] - p[1]) * (r[0] - p[0]);
+        };
+      // r on the segment p q, given that the three are collinear.
+      const auto within =
+        [](const Point<2> &p, const Point<2> &q, const Point<2> &r) {
+          return std::min(p[0], q[0]) <= r[0] && r[0] <= std::max(p[0], q[0]) &&
+                 std::min(p[1], q[1]) <= r[1] && r[1] <= std::max(p[1], q[1]);
+        };
+      const auto touch = [&](const Point<2> &a,
+                             const Point<2> &b,
+                             const Point<2> &c,
+                             const Point<2> &d) {
+        const double d1 = cross(c, d, a), d2 = cross(c, d, b),
+                     d3 = cross(a, b, c), d4 = cross(a, b, d);
+        if (((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) &&
+            ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0)))
+          return true;
+        return (d1 == 0 && within(c, d, a)) || (d2 == 0 && within(c, d, b)) ||
+               (d3 == 0 && within(a, b, c)) || (d4 == 0 && within(a, b, d));
+      };
+      const unsigned int n    = corners.size();
+      const auto         edge = [&](const unsigned int i) {
+        std::ostringstream text;
+        text << "edge " << i + 1 << " from (" << corners[i] << ") to ("
+             << corners[(i + 1) % n] << ")";
+        return text.str();
+      };
+      for (unsigned int i = 0; i < n; ++i)
+        AssertThrow(corners[i].distance(corners[(i + 1) % n]) > 0,
+                    ExcMessage(entry + ": corner " + std::to_string(i + 1) +
+                               " is repeated in the next one; give every "
+                               "corner once."));
+      for (unsigned int i = 0; i < n; ++i)
+        for (unsigned int j = i + 2; j < n; ++j)
+          if (!(i == 0 && j == n - 1) && touch(corners[i],
+                                               corners[(i + 1) % n],
+                                               corners[j],
+                                               corners[(j + 1) % n]))
+            AssertThrow(false,
+                        ExcMessage(entry + ": the polygon crosses itself: " +
+                                   edge(i) + " meets " + edge(j) +
+                                   ". Give the corners in order around the "
+                                   "body."));
+    }
+
+
+
     /**
      * Number of independent stress components and their names, in the order
      * of the entry "Initial stress" (that of the particle CSV).
@@ -155,6 +217,8 @@ namespace MpmOtm
                     ExcMessage(entry("Vertices") +
                                " needs at least 3 points 'x, y' separated "
                                "by ';'."));
+        if constexpr (dim == 2)
+          check_simple_polygon(polygon, entry("Vertices"));
       }
     else
       {

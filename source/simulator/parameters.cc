@@ -187,9 +187,11 @@ namespace MpmOtm
     prm.declare_entry(
       "Courant factor",
       "0.5",
-      Patterns::Double(0., 1.),
+      Patterns::Double(0., 0.95),
       "With Time step = auto, the fraction of the stable time step "
-      "2 / omega_max used, in (0, 1]. Large deformations change the "
+      "2 / omega_max used, in (0, 0.95]: at 1 the fastest mode sits on the "
+      "stability limit and grows, and a Lanczos estimate that has not "
+      "converged errs on the large side. Large deformations change the "
       "stable time step during a run, so keep a margin.");
     prm.declare_entry(
       "Energy growth limit",

@@ -7,6 +7,7 @@
 #include <mpm_otm/algorithms/grid_motion.h>
 #include <mpm_otm/algorithms/stable_time_step.h>
 #include <mpm_otm/algorithms/volumetric_locking_remedy.h>
+#include <mpm_otm/base/activity.h>
 #include <mpm_otm/base/collective_error.h>
 #include <mpm_otm/base/exception_message.h>
 #include <mpm_otm/boundary_conditions/boundary_conditions.h>
@@ -33,6 +34,7 @@ namespace MpmOtm
   void
   Simulator<dim>::setup(const ParameterHandler &prm, const bool resume)
   {
+    Activity::set("creating the grid (Mesh)");
     grid->create(communicator, grid_motion->moves_vertices());
     checkpoint->set_grid_fingerprint(grid->fingerprint());
 
@@ -67,6 +69,7 @@ namespace MpmOtm
             AssertThrow(false, ExcMessage(message.str()));
           }
       }
+    Activity::set("seeding the material points (Particles per cell)");
     points->seed(*grid, *materials, *problem_description);
     if (grid_motion->moves_vertices() && !grid->is_box())
       {
@@ -89,6 +92,7 @@ namespace MpmOtm
                            "material region contains no block centre of "
                            "the grid."));
     Timer shape_function_timer(communicator, true);
+    Activity::set("setting up the shape functions");
     shape_functions->initialize(*grid);
     shape_function_timer.stop();
     boundary_conditions->setup(*shape_functions, *grid);
@@ -117,6 +121,7 @@ namespace MpmOtm
     }
     for (const auto &fixed : boundary_conditions->fixed_components())
       fixed_components.push_back(fixed);
+    Activity::set("setting up the nodal system and the mass matrix");
     system = std::make_unique<NodalSystem<dim>>();
     system->setup(*shape_functions,
                   fixed_components,
@@ -135,6 +140,36 @@ namespace MpmOtm
       }
     if (locking_remedy)
       locking_remedy->initialize(*shape_functions, *system, *materials);
+    // The material that sets the time step, for the messages below: a
+    // wrong modulus or density shows up first as an absurd time step.
+    std::ostringstream fastest;
+    {
+      unsigned int fastest_id = 0;
+      for (unsigned int id = 1; id < materials->n_materials(); ++id)
+        if ((*materials)[id].wave_speed() >
+            (*materials)[fastest_id].wave_speed())
+          fastest_id = id;
+      const auto &material = (*materials)[fastest_id];
+      fastest << " The fastest material is <" << materials->name(fastest_id)
+              << ">: Young's modulus = " << material.youngs_modulus()
+              << " Pa and Density = " << material.density()
+              << " kg/m^3 give a wave speed of " << material.wave_speed()
+              << " m/s; check both if that is not what you meant.";
+    }
+    {
+      // Beyond this the Lanczos products overflow in double precision.
+      const double rate =
+        materials->maximal_wave_speed() / grid->minimal_cell_size();
+      AssertThrow(std::isfinite(rate) && rate < 1e100,
+                  ExcMessage("The wave speed over the smallest cell size, "
+                             "c / h = " +
+                             Utilities::to_string(rate) +
+                             " 1/s, is beyond what the stable time step can "
+                             "be computed for (at most 1e100 1/s): a time "
+                             "step of at most h / c would be needed." +
+                             fastest.str()));
+    }
+    Activity::set("estimating the stable time step");
     // The stable time step of this discretisation at the start; a larger
     // time step is rejected before anything is written.
     const auto stable =
@@ -148,6 +183,11 @@ namespace MpmOtm
     stable_step = stable.time_step;
     if (automatic_time_step)
       time_step = courant_factor * stable.time_step;
+    AssertThrow(stable.time_step > 0.,
+                ExcMessage("The stable time step 2 / omega_max of this "
+                           "discretisation is 0 (omega_max = " +
+                           Utilities::to_string(stable.largest_frequency) +
+                           " 1/s): no time step is stable." + fastest.str()));
     if (!(time_step <= stable.time_step))
       {
         std::ostringstream message;
@@ -162,12 +202,18 @@ namespace MpmOtm
                 << " with the smallest cell size h and the wave speed c). "
                    "Choose a time step of at most "
                 << stable.time_step
-                << ", or Time step = auto (manual, 'Time step').";
+                << ", or Time step = auto (manual, 'Time step')."
+                << fastest.str();
         AssertThrow(false, ExcMessage(message.str()));
       }
     AssertThrow(end_time / time_step < 1e9,
-                ExcMessage("Time/End time / Time/Time step is above 1e9 time "
-                           "steps; check both entries."));
+                ExcMessage(
+                  "Time/End time / Time/Time step is above 1e9 time steps; " +
+                  (automatic_time_step ?
+                     "the time step is " + Utilities::to_string(time_step) +
+                       " = Courant factor x the stable time step." +
+                       fastest.str() :
+                     std::string("check both entries."))));
     output->check_basis_picture(*shape_functions, communicator);
     grid_motion->initialize(*grid,
                             *shape_functions,
@@ -202,6 +248,7 @@ namespace MpmOtm
       stop_if_any_rank_failed(communicator, problem, "", "");
     }
     current_time = 0;
+    Activity::set("reading the checkpoint");
     std::string resumed_from;
     if (resume)
       {

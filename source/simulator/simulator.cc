@@ -10,6 +10,7 @@
 #include <mpm_otm/algorithms/stable_time_step.h>
 #include <mpm_otm/algorithms/time_stepper.h>
 #include <mpm_otm/algorithms/volumetric_locking_remedy.h>
+#include <mpm_otm/base/activity.h>
 #include <mpm_otm/base/collective_error.h>
 #include <mpm_otm/base/exception_message.h>
 #include <mpm_otm/base/stop_signal.h>
@@ -138,6 +139,7 @@ namespace MpmOtm
           report(0);
         }
       unsigned int at_rest_step = numbers::invalid_unsigned_int;
+      Activity::set("the time steps");
       for (unsigned int step = resumed_step + 1; step <= n_steps; ++step)
         {
           const double dt = std::min(time_step, end_time - current_time);
