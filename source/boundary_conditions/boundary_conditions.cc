@@ -716,7 +716,8 @@ namespace MpmOtm
 
   template <int dim>
   std::vector<std::pair<Tensor<1, dim>, Tensor<1, dim>>>
-  BoundaryConditions<dim>::reactions_and_displacements()
+  BoundaryConditions<dim>::reactions_and_displacements(
+    const bool start_new_window)
   {
     std::vector<std::pair<Tensor<1, dim>, Tensor<1, dim>>> result;
     for (auto &condition : conditions)
@@ -726,8 +727,11 @@ namespace MpmOtm
         result.emplace_back(condition.n_steps > 0 ? sum / condition.n_steps :
                                                     sum,
                             condition.displacement);
-        condition.reaction_sum = Tensor<1, dim>();
-        condition.n_steps      = 0;
+        if (start_new_window)
+          {
+            condition.reaction_sum = Tensor<1, dim>();
+            condition.n_steps      = 0;
+          }
       }
     return result;
   }

@@ -79,7 +79,10 @@ namespace MpmOtm
         static_cast<unsigned int>(std::ceil(end_time / time_step - 1e-8));
       Timer wall_clock(communicator, true);
 
-      const auto report = [&](const unsigned int step) {
+      // An output that only a signal asks for does not start a new window
+      // of the averaged reactions (see reactions_and_displacements()).
+      const auto report = [&](const unsigned int step,
+                              const bool         regular_output) {
         TimerOutput::Scope scope(timer, "output");
         statistics.compute(*points,
                            *materials,
@@ -90,7 +93,7 @@ namespace MpmOtm
         statistics.grid_kinetic_energy = system->kinetic_energy();
         statistics.boundary_names      = boundary_conditions->names();
         statistics.boundary_reactions =
-          boundary_conditions->reactions_and_displacements();
+          boundary_conditions->reactions_and_displacements(regular_output);
         output->write(step,
                       current_time,
                       *points,
@@ -136,7 +139,7 @@ namespace MpmOtm
       else
         {
           energy_monitor.check(*points, *materials, stepper.supplied_work());
-          report(0);
+          report(0, true);
         }
       unsigned int at_rest_step = numbers::invalid_unsigned_int;
       Activity::set("the time steps");
@@ -178,7 +181,7 @@ namespace MpmOtm
             }
           current_time = (step == n_steps) ? end_time : current_time + dt;
           if (output_step || !signal.empty() || at_rest_step == step)
-            report(step);
+            report(step, output_step || at_rest_step == step);
           if (at_rest_step == step)
             {
               pcout << "Quasi-static end: " << quasi_static_end->summary()

@@ -1,7 +1,9 @@
 #!/bin/sh
 # A run stopped by SIGTERM writes a checkpoint of its last step; mpm-otm
 # --resume continues it to the end, and its last particle CSV equals, every
-# digit, that of the same run left uninterrupted. Serial and on two MPI
+# digit, that of the same run left uninterrupted; so does statistics.csv,
+# the averaged floor reactions included, but for the row of the step the
+# signal added. Serial and on two MPI
 # ranks. The signal is sent right after the first output, so that the run
 # cannot have finished before it arrives.
 # Usage: sigterm_then_resume.sh <mpm-otm> <parameter file>
@@ -18,6 +20,7 @@ for ranks in 1 2; do
   $launch "$exe" "$prm" > log 2>&1 ||
     { echo "the uninterrupted run failed:"; cat log; exit 1; }
   cp $directory/$last_csv reference-$ranks.csv
+  cp $directory/statistics.csv reference-statistics-$ranks.csv
   rm -rf $directory
 
   start_run $ranks log
@@ -41,5 +44,14 @@ for ranks in 1 2; do
     { echo "statistics.csv does not end with step 10000"; exit 1; }
   [ "$(cut -d, -f1 $directory/statistics.csv | sort | uniq -d)" = "" ] ||
     { echo "statistics.csv lists a step twice"; exit 1; }
+  if [ $((step % 2500)) -ne 0 ]; then
+    grep -v "^$step," $directory/statistics.csv > statistics-without-signal.csv
+  else
+    cp $directory/statistics.csv statistics-without-signal.csv
+  fi
+  cmp statistics-without-signal.csv reference-statistics-$ranks.csv ||
+    { echo "statistics.csv differs from the uninterrupted run's:";
+      diff statistics-without-signal.csv reference-statistics-$ranks.csv;
+      exit 1; }
   echo "$ranks rank(s): resumed run identical to the uninterrupted one"
 done

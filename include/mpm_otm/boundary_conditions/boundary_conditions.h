@@ -194,12 +194,15 @@ namespace MpmOtm
 
     /**
      * The reaction of each condition, averaged over the steps since the
-     * last call of this function, and the mean displacement of its nodes
-     * since the start (the integral of their mean velocity). Resets the
-     * averages.
+     * last call of this function with @p start_new_window, and the mean
+     * displacement of its nodes since the start (the integral of their mean
+     * velocity). With @p start_new_window the averages start anew; an
+     * output that a signal adds keeps them, so that a run stopped and
+     * resumed writes the same averages at its next regular output as a run
+     * that was never stopped.
      */
     std::vector<std::pair<Tensor<1, dim>, Tensor<1, dim>>>
-    reactions_and_displacements();
+    reactions_and_displacements(const bool start_new_window);
 
     /**
      * Save the displacements of the prescribed velocities and the reactions
