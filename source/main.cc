@@ -5,8 +5,13 @@
 #include <mpm_otm/base/stop_signal.h>
 #include <mpm_otm/simulator/simulator.h>
 
+#ifdef __linux__
+#  include <sys/prctl.h>
+#endif
+
 #include <algorithm>
 #include <chrono>
+#include <csignal>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -146,7 +151,14 @@ int
 main(int argc, char *argv[])
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const bool                               root =
+#ifdef __linux__
+  // The ranks of an MPI run die with the launcher (mpirun, or the daemon
+  // that started them): killed with SIGKILL, it cannot stop them, and they
+  // would go on writing output. A serial run is left alone (nohup).
+  if (dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1)
+    prctl(PR_SET_PDEATHSIG, SIGKILL);
+#endif
+  const bool root =
     dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
   bool        failed = false;
   std::string error_message;

@@ -77,9 +77,22 @@ namespace MpmOtm
     {
       const std::string temporary = file_name + ".tmp";
       std::ofstream     file(temporary);
-      if (file)
-        write(file);
+      // A writer that checks its stream itself (deal.II's write_vtu())
+      // throws a generic I/O error: the stream's failure says more.
+      int write_error = 0;
+      try
+        {
+          if (file)
+            write(file);
+        }
+      catch (const std::exception &)
+        {
+          write_error = errno;
+          file.setstate(std::ios::badbit);
+        }
       file.close();
+      if (write_error != 0)
+        errno = write_error;
       std::error_code error;
       if (file)
         fs::rename(temporary, file_name, error);
