@@ -6,8 +6,8 @@
 #include <mpm_otm/grid/gmsh_file.h>
 
 #include <algorithm>
-#include <filesystem>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <limits>
 #include <sstream>

@@ -14,71 +14,51 @@ exe=$1
 failed=0
 
 # write_prm NAME END_TIME DIM METHOD FAMILY DEGREE SCHEME MASS
-# (DIM = 1 free: a 1D bar fixed at x = 0 whose free end lies inside the
-# grid, so that a partially lumped mass differs from the consistent one)
+# (DIM = 1-free: a 1D bar fixed at x = 0 whose free end lies inside the
+# grid, so that a partially lumped mass differs from the consistent one;
+# otherwise the vibrating bar filling the grid)
 write_prm() {
+  cells="hypercube"
   if [ "$3" = "1-free" ]; then
-    cat > $1.prm <<PRM
-set Dimension = 1
-set Problem = custom
-set Method = $4
-set Shape functions = $5
-set B-spline degree = $6
-set Update scheme = $7
-set Mass matrix = $8
+    dimension=1
+    mesh="set Lower corner = 0
+  set Upper corner = 1.25
+  set Subdivisions = 25"
+    particles=4
+    problem="set Problem = custom
 subsection Custom problem
   set Material lower corner = 0
   set Material upper corner = 1
   set Initial velocity = 1e-6 * sin(pi * x / 2)
   set Fixed components = 0: x
-end
-subsection Time
-  set End time = $2
-  set Time step = auto
-  set Courant factor = 0.95
-  set Energy growth limit = 0.25
-end
-subsection Mesh
-  set Lower corner = 0
-  set Upper corner = 1.25
-  set Subdivisions = 25
-end
-subsection Particles
-  set Particles per cell = 4
-end
-subsection Material
-  set Young's modulus = 100
-  set Poisson's ratio = 0
-  set Density = 1
-end
-subsection Output
-  set Directory = output-$1
-  set Interval = 0
-  set Format = none
-end
-PRM
-    return
-  fi
-  if [ "$3" -eq 1 ]; then
-    mesh="set Lower corner = 0
+end"
+  else
+    dimension=$3
+    problem="set Problem = vibrating bar
+subsection Vibrating bar
+  set Initial velocity amplitude = 1e-6
+end"
+    if [ "$3" -eq 1 ]; then
+      mesh="set Lower corner = 0
   set Upper corner = 1
   set Subdivisions = 20"
-    cells="hypercube"
-    particles=4
-  else
-    mesh="set Lower corner = 0, 0
-  set Upper corner = 25, 2
-  set Subdivisions = 8, 1"
-    cells="hypercube"
-    particles="4, 4"
-    [ "$5" = "Powell-Sabin" ] && cells="simplex" && particles="16, 14" &&
+      particles=4
+    elif [ "$5" = "Powell-Sabin" ]; then
+      cells="simplex"
       mesh="set Lower corner = 0, 0
   set Upper corner = 25, 2
   set Subdivisions = 4, 1"
+      particles="16, 14"
+    else
+      mesh="set Lower corner = 0, 0
+  set Upper corner = 25, 2
+  set Subdivisions = 8, 1"
+      particles="4, 4"
+    fi
   fi
   cat > $1.prm <<PRM
-set Dimension = $3
-set Problem = vibrating bar
+set Dimension = $dimension
+$problem
 set Method = $4
 set Shape functions = $5
 set B-spline degree = $6
@@ -101,9 +81,6 @@ subsection Material
   set Young's modulus = 100
   set Poisson's ratio = 0
   set Density = 1
-end
-subsection Vibrating bar
-  set Initial velocity amplitude = 1e-6
 end
 subsection Output
   set Directory = output-$1
