@@ -332,12 +332,16 @@ end"
       echo "Biaxial test with strain softening: peak, residual, shear band"
       {
         echo "# cells remedy peak_load late_load(platen displacement 0.045-0.06 m) band_points band_angle slip (kN/m, deg, m; exact peak 69.28, residual 10.91)"
-        for cells in "16 20 0.1" "32 40 0.05"; do
-          read -r nx ny h <<< "$cells"
+        for cells in "16 22 0.1 1.95 2.05" "32 44 0.05 1.975 2.025"; do
+          read -r nx ny h box_lower box_upper <<< "$cells"
           for remedy in F-bar none; do
             run biaxial-softening.prm "set Volumetric locking remedy = $remedy
 subsection Mesh
  set Subdivisions = $nx, $ny
+end
+subsection Boundary platen
+ set Box lower corner = -0.3, $box_lower
+ set Box upper corner = 1.3, $box_upper
 end
 subsection Time
  set End time = 12

@@ -12,6 +12,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <sstream>
 
 namespace MpmOtm
 {
@@ -248,6 +250,7 @@ namespace MpmOtm
             // for slip and friction.
             std::vector<Tensor<1, dim>> normals;
             std::vector<Point<dim>>     centers;
+            double cell_depth = std::numeric_limits<double>::infinity();
             std::vector<double> faces_per_id(condition.boundary_ids.size(), 0.);
             for (const auto &cell : triangulation.active_cell_iterators())
               if (cell->is_locally_owned())
@@ -262,6 +265,15 @@ namespace MpmOtm
                       faces_per_id[id - condition.boundary_ids.begin()] += 1.;
                       normals.push_back(outward_normal<dim>(cell, f));
                       centers.push_back(cell->face(f)->center());
+                      // Twice the distance from the face to the cell's
+                      // centre: the cell's depth for quadrilaterals and
+                      // hexahedra, two thirds (triangles) or a half
+                      // (tetrahedra) of it for simplices.
+                      cell_depth =
+                        std::min(cell_depth,
+                                 2. *
+                                   std::abs(normals.back() *
+                                            (cell->center() - centers.back())));
                     }
             Tensor<1, dim> sum;
             for (const auto &normal : normals)
@@ -305,6 +317,8 @@ namespace MpmOtm
             deviation = Utilities::MPI::max(deviation, communicator);
             condition.wall_offset =
               Utilities::MPI::sum(offset, communicator) / n_faces;
+            condition.cell_depth =
+              Utilities::MPI::min(cell_depth, communicator);
             AssertThrow(deviation < 1e-8 || condition.type == Type::fixed ||
                           condition.type == Type::velocity,
                         ExcMessage(path + "Type = slip and friction need a "
@@ -320,6 +334,58 @@ namespace MpmOtm
         condition.reaction_sum = Tensor<1, dim>();
         condition.displacement = Tensor<1, dim>();
         condition.n_steps      = 0;
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  BoundaryConditions<dim>::check_travel_into_grid(const double end_time) const
+  {
+    for (const auto &condition : conditions)
+      {
+        if (condition.type != Type::velocity || condition.on_box ||
+            condition.normal.norm() == 0.)
+          continue;
+        // The displacement of the prescribed components against the outward
+        // normal, by the trapezoidal rule, and its largest value in the run.
+        const auto inward_velocity = [&](const double t) {
+          const Tensor<1, dim> velocity =
+            condition.velocity->vector_value(Point<dim>(), t);
+          double inward = 0.;
+          for (unsigned int d = 0; d < dim; ++d)
+            if (condition.components[d])
+              inward -= velocity[d] * condition.normal[d];
+          return inward;
+        };
+        const unsigned int n_intervals = 10000;
+        const double       dt          = end_time / n_intervals;
+        double previous = inward_velocity(0.), travel = 0., largest = 0.;
+        for (unsigned int i = 1; i <= n_intervals; ++i)
+          {
+            const double current = inward_velocity(i * dt);
+            travel += 0.5 * dt * (previous + current);
+            largest  = std::max(largest, travel);
+            previous = current;
+          }
+        std::ostringstream message;
+        message << "Boundary " << condition.name
+                << "/Velocity moves the grid side of its Boundary ids "
+                << largest
+                << " m into the grid before the End time, more than half the "
+                   "depth of the cells along that side ("
+                << 0.5 * condition.cell_depth
+                << " m). MPM's grid stays where it is: once the material "
+                   "has moved that far from the side, the side's nodes hold "
+                   "less and less of it, and the condition's reaction stops "
+                   "being the load on it (a platen loses its specimen). Give "
+                   "the condition Box lower corner and Box upper corner "
+                   "instead of Boundary ids (the box follows the "
+                   "displacement: manual, 'Boundary conditions'), or a "
+                   "shorter Time/End time.";
+        AssertThrow(!(largest > 0.5 * condition.cell_depth),
+                    ExcMessage(message.str()));
       }
   }
 

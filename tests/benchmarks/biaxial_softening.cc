@@ -21,7 +21,7 @@ main(int argc, char **argv)
   using namespace Biaxial;
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   initlog();
-  const Result result = run(16, 20, 6., 0.025);
+  const Result result = run(16, 22, 6., 0.025);
   check(std::abs(result.peak_load / peak - 1.) < 0.02,
         "the peak load is not within 2 % of the exact one");
   check(result.late_load < 0.3 * result.peak_load &&

@@ -117,6 +117,19 @@ namespace MpmOtm
     fixed_components() const;
 
     /**
+     * Refuse a velocity condition on grid sides (Boundary ids) whose
+     * prescribed motion takes it more than half a cell into the grid before
+     * @p end_time: MPM's grid stays where it is, so the material leaves the
+     * side's nodes, which then hold less and less of it, and the condition's
+     * reaction stops being the load on the material (a platen on the grid's
+     * top side lost the specimen of the biaxial test after 0.04 m of travel
+     * on 0.05 m cells). A condition on a box follows its displacement.
+     * Call after setup(), before anything is written.
+     */
+    void
+    check_travel_into_grid(const double end_time) const;
+
+    /**
      * Measure, for every frictional condition, the gap between its wall and
      * the material in the support of each of its nodes, from the points'
      * locations and volumes and the shape function data @p data of the
@@ -243,6 +256,8 @@ namespace MpmOtm
       Tensor<1, dim>                         normal;
       /// normal * x for the points x of a planar boundary.
       double wall_offset = 0;
+      /// The least depth, along the normal, of the cells at its sides.
+      double cell_depth = 0;
       /// For friction: the smallest gap between the wall and the points in
       /// the support of each function (entries of the nodal vectors).
       LinearAlgebra::distributed::Vector<double> gap;
