@@ -1,7 +1,7 @@
 #include <mpm_otm/algorithms/energy_monitor.h>
 #include <mpm_otm/material_points/material_points.h>
-#include <mpm_otm/material_points/point_energy.h>
 #include <mpm_otm/materials/material_library.h>
+#include <mpm_otm/materials/point_energy.h>
 
 #include <sstream>
 

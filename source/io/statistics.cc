@@ -2,8 +2,8 @@
 
 #include <mpm_otm/io/statistics.h>
 #include <mpm_otm/material_points/material_points.h>
-#include <mpm_otm/material_points/point_energy.h>
 #include <mpm_otm/materials/material_library.h>
+#include <mpm_otm/materials/point_energy.h>
 #include <mpm_otm/problems/problem.h>
 
 #include <cmath>

@@ -9,9 +9,8 @@
 #include <mpm_otm/base/node_memory.h>
 #include <mpm_otm/grid/background_grid.h>
 #include <mpm_otm/material_points/material_points.h>
+#include <mpm_otm/material_points/seeding_bodies.h>
 #include <mpm_otm/material_points/simplex_search.h>
-#include <mpm_otm/materials/material_library.h>
-#include <mpm_otm/problems/problem.h>
 
 #include <algorithm>
 #include <array>
@@ -127,16 +126,15 @@ namespace MpmOtm
 
   template <int dim>
   void
-  MaterialPoints<dim>::seed(const BackgroundGrid<dim>  &background,
-                            const MaterialLibrary<dim> &materials,
-                            const Problem<dim>         &problem)
+  MaterialPoints<dim>::seed(const BackgroundGrid<dim> &background,
+                            const SeedingBodies<dim>  &bodies)
   {
     grid = &background;
-    check_memory(materials, problem);
-    particles = std::make_unique<Particles::ParticleHandler<dim>>(
-      grid->triangulation(),
-      grid->mapping(),
-      materials.n_properties());
+    check_memory(bodies);
+    particles =
+      std::make_unique<Particles::ParticleHandler<dim>>(grid->triangulation(),
+                                                        grid->mapping(),
+                                                        bodies.n_properties());
     particles->signals.particle_lost.connect(
       [this](const typename Particles::ParticleIterator<dim> &particle,
              const typename Triangulation<dim>::active_cell_iterator &) {
@@ -147,16 +145,16 @@ namespace MpmOtm
         std::make_unique<GridTools::Cache<dim, dim>>(grid->triangulation(),
                                                      grid->mapping());
 
-    points_per_body.assign(problem.n_bodies(), 0);
+    points_per_body.assign(bodies.n_bodies(), 0);
     points_outside_bodies = 0;
     if (!grid->is_box())
       {
-        insert_points_of_cells(materials, problem);
+        insert_points_of_cells(bodies);
         particles->update_cached_numbers();
         Utilities::MPI::sum(points_per_body, communicator(), points_per_body);
         points_outside_bodies =
           Utilities::MPI::sum(points_outside_bodies, communicator());
-        check_every_body_has_points(problem);
+        check_every_body_has_points(bodies);
         return;
       }
 
@@ -185,7 +183,7 @@ namespace MpmOtm
                   linear = linear * blocks[d] + block[d];
                 }
               owned_cell_of_block[linear] = cell;
-              insert_points_of_block(block, cell, materials, problem);
+              insert_points_of_block(block, cell, bodies);
             }
       }
     else
@@ -222,8 +220,7 @@ namespace MpmOtm
               insert_points_of_block(
                 block,
                 typename Triangulation<dim>::active_cell_iterator(),
-                materials,
-                problem);
+                bodies);
             }
       }
     particles->update_cached_numbers();
@@ -231,13 +228,13 @@ namespace MpmOtm
     Utilities::MPI::sum(points_per_body, communicator(), points_per_body);
     points_outside_bodies =
       Utilities::MPI::sum(points_outside_bodies, communicator());
-    check_every_body_has_points(problem);
+    check_every_body_has_points(bodies);
 
     // Every traction boundary must lie on a block boundary and have received
     // boundary points.
-    for (const auto id : problem.traction_boundaries())
+    for (const auto id : bodies.traction_boundaries())
       {
-        const BoundingBox<dim> region = problem.material_region();
+        const BoundingBox<dim> region = bodies.material_region();
         const unsigned int     d      = id / 2;
         const double           face   = (id % 2 == 0) ?
                                           region.get_boundary_points().first[d] :
@@ -272,15 +269,14 @@ namespace MpmOtm
 
   template <int dim>
   void
-  MaterialPoints<dim>::check_memory(const MaterialLibrary<dim> &materials,
-                                    const Problem<dim>         &problem) const
+  MaterialPoints<dim>::check_memory(const SeedingBodies<dim> &bodies) const
   {
     // What a point takes at least in deal.II's particle handler: its
     // location, reference location, id, properties and handle. The whole
     // run takes 320 to 370 bytes per point with linear functions and 18
     // properties (doc/performance.md, "Memory of the grid").
     const double bytes_per_point =
-      sizeof(double) * (2 * dim + materials.n_properties()) +
+      sizeof(double) * (2 * dim + bodies.n_properties()) +
       sizeof(types::particle_index) + sizeof(unsigned int);
     const NodeMemory memory(communicator());
 
@@ -377,7 +373,7 @@ namespace MpmOtm
                 cells[cell_index],
                 simplex ? simplex_points[q] :
                           block_reference_point<dim>(q, n_per_direction));
-            if (problem.body_containing(X) != numbers::invalid_unsigned_int)
+            if (bodies.body_containing(X) != numbers::invalid_unsigned_int)
               ++inside;
           }
         n_points = n_pattern * inside / n_samples;
@@ -395,7 +391,7 @@ namespace MpmOtm
                               "")
               << "; at " << bytes_per_point
               << " bytes or more each (position, reference position, id and "
-              << materials.n_properties() << " properties) they need about "
+              << bodies.n_properties() << " properties) they need about "
               << shortage;
     stop_if_any_rank_failed(communicator(),
                             message.str(),
@@ -409,11 +405,11 @@ namespace MpmOtm
   template <int dim>
   void
   MaterialPoints<dim>::check_every_body_has_points(
-    const Problem<dim> &problem) const
+    const SeedingBodies<dim> &bodies) const
   {
     for (unsigned int body = 0; body < points_per_body.size(); ++body)
       AssertThrow(points_per_body[body] > 0,
-                  ExcMessage(problem.body_name(body) +
+                  ExcMessage(bodies.body_name(body) +
                              " received no material point: no point of the "
                              "seeding pattern (Particles/Particles per cell "
                              "per direction in each " +
@@ -428,43 +424,10 @@ namespace MpmOtm
 
   template <int dim>
   void
-  MaterialPoints<dim>::set_point_properties(
-    const Point<dim>           &X,
-    const unsigned int          body,
-    const double                volume,
-    const MaterialLibrary<dim> &materials,
-    const Problem<dim>         &problem,
-    std::vector<double>        &properties) const
-  {
-    using Layout = PropertyLayout<dim>;
-    std::fill(properties.begin(), properties.end(), 0.);
-    const unsigned int material_id  = problem.material_id(body);
-    properties[Layout::material_id] = material_id;
-    properties[Layout::mass]        = materials[material_id].density() * volume;
-    const auto [sigma, out_of_plane] = problem.initial_stress(X, body);
-    Layout::set_stress(ArrayView<double>(properties), sigma);
-    if (dim < 3)
-      properties[Layout::out_of_plane_stress] = out_of_plane;
-    properties[Layout::initial_volume] = volume;
-    const Tensor<1, dim> v0            = problem.initial_velocity(X);
-    for (unsigned int d = 0; d < dim; ++d)
-      {
-        properties[Layout::initial_position + d]               = X[d];
-        properties[Layout::velocity + d]                       = v0[d];
-        properties[Layout::deformation_gradient + d * dim + d] = 1.;
-      }
-  }
-
-
-
-  template <int dim>
-  void
-  MaterialPoints<dim>::insert_points_of_cells(
-    const MaterialLibrary<dim> &materials,
-    const Problem<dim>         &problem)
+  MaterialPoints<dim>::insert_points_of_cells(const SeedingBodies<dim> &bodies)
   {
     const std::string file = "Mesh/Mesh file (<" + grid->mesh_file() + ">)";
-    AssertThrow(problem.traction_boundaries().empty(),
+    AssertThrow(bodies.traction_boundaries().empty(),
                 ExcMessage("Custom problem/Traction boundary ids: tractions "
                            "act on the sides of a box material region on a "
                            "box grid, not on a " +
@@ -495,7 +458,7 @@ namespace MpmOtm
                                                               1. / n_pattern)),
                           update_quadrature_points | update_JxW_values);
 
-    std::vector<double> properties(materials.n_properties(), 0.);
+    std::vector<double> properties(bodies.n_properties(), 0.);
     for (const auto &cell : grid->triangulation().active_cell_iterators())
       if (cell->is_locally_owned())
         {
@@ -510,19 +473,17 @@ namespace MpmOtm
           for (unsigned int q = 0; q < n_pattern; ++q)
             {
               const Point<dim>   X    = pattern.quadrature_point(q);
-              const unsigned int body = problem.body_containing(X);
+              const unsigned int body = bodies.body_containing(X);
               if (body == numbers::invalid_unsigned_int)
                 {
                   ++points_outside_bodies;
                   continue;
                 }
               ++points_per_body[body];
-              set_point_properties(X,
-                                   body,
-                                   measure * pattern.JxW(q) / sum,
-                                   materials,
-                                   problem,
-                                   properties);
+              bodies.set_properties(X,
+                                    body,
+                                    measure * pattern.JxW(q) / sum,
+                                    properties);
               // Numbered by the cell of the coarse mesh, so that the
               // numbers do not depend on the number of ranks.
               particles->insert_particle(X,
@@ -544,15 +505,14 @@ namespace MpmOtm
   MaterialPoints<dim>::insert_points_of_block(
     const std::vector<unsigned int>                         &block,
     const typename Triangulation<dim>::active_cell_iterator &block_cell,
-    const MaterialLibrary<dim>                              &materials,
-    const Problem<dim>                                      &problem)
+    const SeedingBodies<dim>                                &bodies)
   {
     using Layout             = PropertyLayout<dim>;
     const auto &blocks       = grid->subdivisions();
     const auto  grid_lower   = grid->box().get_boundary_points().first;
-    const auto  traction_ids = problem.traction_boundaries();
+    const auto  traction_ids = bodies.traction_boundaries();
     const auto  region =
-      traction_ids.empty() ? BoundingBox<dim>() : problem.material_region();
+      traction_ids.empty() ? BoundingBox<dim>() : bodies.material_region();
 
     unsigned int   points_per_block = 1;
     double         block_volume     = 1;
@@ -569,7 +529,7 @@ namespace MpmOtm
       }
     const double volume = block_volume / points_per_block;
 
-    std::vector<double> properties(materials.n_properties(), 0.);
+    std::vector<double> properties(bodies.n_properties(), 0.);
     typename Triangulation<dim>::active_cell_iterator hint;
     for (unsigned int local = 0; local < points_per_block; ++local)
       {
@@ -598,7 +558,7 @@ namespace MpmOtm
             reference = found.second;
           }
 
-        const unsigned int body = problem.body_containing(X);
+        const unsigned int body = bodies.body_containing(X);
         if (body == numbers::invalid_unsigned_int)
           {
             ++points_outside_bodies;
@@ -606,7 +566,7 @@ namespace MpmOtm
           }
         ++points_per_body[body];
 
-        set_point_properties(X, body, volume, materials, problem, properties);
+        bodies.set_properties(X, body, volume, properties);
         // Boundary particles (thesis Sect. 2.4.1): the outermost layer next
         // to a traction boundary represents the boundary measure V_p / spacing.
         for (const auto id : traction_ids)
@@ -637,15 +597,9 @@ namespace MpmOtm
 
 
   template void
-  MaterialPoints<1>::seed(const BackgroundGrid<1> &,
-                          const MaterialLibrary<1> &,
-                          const Problem<1> &);
+  MaterialPoints<1>::seed(const BackgroundGrid<1> &, const SeedingBodies<1> &);
   template void
-  MaterialPoints<2>::seed(const BackgroundGrid<2> &,
-                          const MaterialLibrary<2> &,
-                          const Problem<2> &);
+  MaterialPoints<2>::seed(const BackgroundGrid<2> &, const SeedingBodies<2> &);
   template void
-  MaterialPoints<3>::seed(const BackgroundGrid<3> &,
-                          const MaterialLibrary<3> &,
-                          const Problem<3> &);
+  MaterialPoints<3>::seed(const BackgroundGrid<3> &, const SeedingBodies<3> &);
 } // namespace MpmOtm

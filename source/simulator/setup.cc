@@ -18,6 +18,7 @@
 #include <mpm_otm/io/output_writer.h>
 #include <mpm_otm/material_points/material_points.h>
 #include <mpm_otm/materials/material_library.h>
+#include <mpm_otm/problems/body_seeder.h>
 #include <mpm_otm/problems/problem.h>
 #include <mpm_otm/shape_functions/shape_functions.h>
 #include <mpm_otm/simulator/simulator.h>
@@ -70,7 +71,7 @@ namespace MpmOtm
           }
       }
     Activity::set("seeding the material points (Particles per cell)");
-    points->seed(*grid, *materials, *problem_description);
+    points->seed(*grid, BodySeeder<dim>(*problem_description, *materials));
     if (grid_motion->moves_vertices() && !grid->is_box())
       {
         // The same condition on a Mesh file: no point of the seeding

@@ -27,18 +27,17 @@ namespace MpmOtm
   template <int dim>
   class BackgroundGrid;
   template <int dim>
-  class MaterialLibrary;
-  template <int dim>
-  class Problem;
+  class SeedingBodies;
 
   /**
    * The material points: a thin layer over Particles::ParticleHandler with
    * the property layout of PropertyLayout. It seeds a regular pattern of
    * points per block of a box grid (n per direction, thesis Sect. 2.4 and
    * Fig. 4.2) or per cell of a Mesh file (n per direction of the reference
-   * cell), gives them mass from density and volume, marks the points next to
-   * a traction boundary as boundary particles (thesis Sect. 2.4.1 / 2.5,
-   * box grids), and re-associates moved points with their cells.
+   * cell) where the bodies are, with the properties the bodies give them
+   * (SeedingBodies: it knows no material and no problem), marks the points
+   * next to a traction boundary as boundary particles (thesis Sect. 2.4.1 /
+   * 2.5, box grids), and re-associates moved points with their cells.
    */
   template <int dim>
   class MaterialPoints
@@ -62,17 +61,14 @@ namespace MpmOtm
 
     /**
      * Create the particle handler on @p grid and seed the points of the
-     * regular pattern of each block that lie in one of the problem's bodies:
-     * X_p, V_p = block volume / points per block, m_p = rho V_p with the
-     * density of the body's material, v_p = v0(X_p), F_p = I, sigma_p and
-     * the out-of-plane stress from the body's initial stress. On a Mesh file
-     * the pattern is that of each cell (insert_points_of_cells()). Stops if
-     * a body receives no point.
+     * regular pattern of each block that lie in one of @p bodies, with the
+     * volume V_p = block volume / points per block and the properties the
+     * bodies give a point there (SeedingBodies::set_properties()). On a
+     * Mesh file the pattern is that of each cell (insert_points_of_cells()).
+     * Stops if a body receives no point.
      */
     void
-    seed(const BackgroundGrid<dim>  &grid,
-         const MaterialLibrary<dim> &materials,
-         const Problem<dim>         &problem);
+    seed(const BackgroundGrid<dim> &grid, const SeedingBodies<dim> &bodies);
 
     /**
      * Find the cell of every point after the points have moved. A point
@@ -147,34 +143,20 @@ namespace MpmOtm
      * per-direction Particles per cell.
      */
     void
-    insert_points_of_cells(const MaterialLibrary<dim> &materials,
-                           const Problem<dim>         &problem);
+    insert_points_of_cells(const SeedingBodies<dim> &bodies);
 
     /**
      * Stop if a body has received no point (points_per_body summed over
      * the ranks).
      */
     void
-    check_every_body_has_points(const Problem<dim> &problem) const;
-
-    /**
-     * The properties of a new point at @p X in body @p body with volume
-     * @p volume (mass, stress, velocity, F = I, ...), traction data zero.
-     */
-    void
-    set_point_properties(const Point<dim>           &X,
-                         const unsigned int          body,
-                         const double                volume,
-                         const MaterialLibrary<dim> &materials,
-                         const Problem<dim>         &problem,
-                         std::vector<double>        &properties) const;
+    check_every_body_has_points(const SeedingBodies<dim> &bodies) const;
 
     void
     insert_points_of_block(
       const std::vector<unsigned int>                         &block,
       const typename Triangulation<dim>::active_cell_iterator &block_cell,
-      const MaterialLibrary<dim>                              &materials,
-      const Problem<dim>                                      &problem);
+      const SeedingBodies<dim>                                &bodies);
 
     void
     locate_on_simplices();
@@ -187,8 +169,7 @@ namespace MpmOtm
      * alone exceed the node's memory. Collective.
      */
     void
-    check_memory(const MaterialLibrary<dim> &materials,
-                 const Problem<dim>         &problem) const;
+    check_memory(const SeedingBodies<dim> &bodies) const;
 
     /**
      * Locate on a fixed grid of axis-parallel boxes by arithmetic: a point
@@ -212,7 +193,7 @@ namespace MpmOtm
     std::vector<unsigned int>                                 n_per_direction;
     std::unique_ptr<Particles::ParticleHandler<dim>>          particles;
     std::vector<std::pair<types::particle_index, Point<dim>>> lost_points;
-    /// Points seeded in each of the problem's bodies (on all ranks).
+    /// Points seeded in each of the bodies (on all ranks).
     std::vector<unsigned int> points_per_body;
     /// Pattern points in no body (on all ranks after seeding).
     types::particle_index points_outside_bodies = 0;

@@ -1,5 +1,5 @@
-#ifndef mpm_otm_material_points_point_energy_h
-#define mpm_otm_material_points_point_energy_h
+#ifndef mpm_otm_materials_point_energy_h
+#define mpm_otm_materials_point_energy_h
 
 #include <deal.II/base/array_view.h>
 

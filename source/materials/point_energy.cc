@@ -1,6 +1,6 @@
-#include <mpm_otm/material_points/point_energy.h>
 #include <mpm_otm/material_points/property_layout.h>
 #include <mpm_otm/materials/material_library.h>
+#include <mpm_otm/materials/point_energy.h>
 
 namespace MpmOtm
 {
