@@ -236,6 +236,7 @@ namespace MpmOtm
                          "B-splines: no Greville point), so the condition "
                          "would act on nothing; enlarge the box to hold the "
                          "nodes it should act on."));
+            refuse_nodes_on_box_sides(condition);
           }
         else
           {
@@ -387,6 +388,58 @@ namespace MpmOtm
         AssertThrow(!(largest > 0.5 * condition.cell_depth),
                     ExcMessage(message.str()));
       }
+  }
+
+
+
+  template <int dim>
+  void
+  BoundaryConditions<dim>::refuse_nodes_on_box_sides(
+    const Condition &condition) const
+  {
+    // Move each side of the box in and out by a margin far above round-off
+    // and far below any placement a user means; if that changes the nodes
+    // it holds, nodes lie on that side. Sides on or beyond the grid's own
+    // sides hold the grid's boundary nodes without ambiguity.
+    const double     margin = 1e-9 * background_grid->minimal_cell_size();
+    const Point<dim> grid_lower =
+      background_grid->box().get_boundary_points().first;
+    const Point<dim> grid_upper =
+      background_grid->box().get_boundary_points().second;
+    const Point<dim> lower = condition.box.get_boundary_points().first;
+    const Point<dim> upper = condition.box.get_boundary_points().second;
+    for (unsigned int d = 0; d < dim; ++d)
+      for (const bool upper_side : {false, true})
+        {
+          const double side = upper_side ? upper[d] : lower[d];
+          if (upper_side ? !(side < grid_upper[d] - margin) :
+                           !(side > grid_lower[d] + margin))
+            continue;
+          std::vector<types::global_dof_index> inside, outside;
+          for (const double shift : {-margin, margin})
+            {
+              Point<dim> moved_lower = lower, moved_upper = upper;
+              (upper_side ? moved_upper : moved_lower)[d] += shift;
+              functions->functions_in_box(
+                BoundingBox<dim>(std::make_pair(moved_lower, moved_upper)),
+                (shift < 0.) == upper_side ? inside : outside);
+            }
+          const unsigned int on_side =
+            Utilities::MPI::sum(static_cast<unsigned int>(outside.size() -
+                                                          inside.size()),
+                                communicator);
+          std::ostringstream message;
+          message << "Boundary " << condition.name
+                  << "/Box lower corner, Box upper corner: " << on_side
+                  << " node(s) of the grid lie on the box's side "
+                  << static_cast<char>('x' + d) << " = " << side
+                  << ", inside the grid, so round-off decides whether the "
+                     "condition holds them (linear, max-ent: the vertices; "
+                     "B-splines: the Greville points, at the centres of the "
+                     "cells away from the grid's sides). Move that side off "
+                     "the row of nodes, e.g. by a tenth of a cell.";
+          AssertThrow(on_side == 0, ExcMessage(message.str()));
+        }
   }
 
 

@@ -279,6 +279,15 @@ namespace MpmOtm
     constrained_components(const Condition &condition) const;
 
     /**
+     * Stop if nodes of the grid lie on a side of @p condition's box that is
+     * inside the grid: whether the box holds them is then decided by
+     * round-off (a B-spline platen of half a cell around a row of vertices
+     * has the Greville points exactly on its sides). Collective.
+     */
+    void
+    refuse_nodes_on_box_sides(const Condition &condition) const;
+
+    /**
      * Set @p constraints to the system's NodalSystem::constraints() and add
      * a line per component that a condition fixes on each of its nodes with
      * mass, with the inhomogeneity @p value(i, c, target) for the local
