@@ -28,15 +28,8 @@ run() {
   "$exe" run.prm > run.log 2>&1 || { tail -5 run.log >&2; return 1; }
 }
 
-# Mean uy of the points of the last point column of the cantilever (X > $1)
-# for every particles-*.csv of ./run: "time uy", time = step * $2.
-tip_history() {
-  for file in run/particles-*.csv; do
-    step=$(basename "$file" .csv | sed 's/particles-0*//')
-    awk -F, -v t="$(awk "BEGIN{print ${step:-0} * $2}")" -v x="$1" \
-      'NR > 1 && $2 > x { s += $7; n++ } END { printf "%.6g %.8e\n", t, s / n }' "$file"
-  done | sort -g
-}
+# tip_history X DT: the tip of the cantilever over time (tip_history.sh).
+. "$root/doc/scripts/tip_history.sh"
 
 for benchmark in $benchmarks; do
   case $benchmark in

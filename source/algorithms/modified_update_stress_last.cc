@@ -1,4 +1,5 @@
 #include <mpm_otm/algorithms/modified_update_stress_last.h>
+#include <mpm_otm/algorithms/particle_transfer.h>
 #include <mpm_otm/base/plugins.h>
 
 namespace MpmOtm
@@ -16,12 +17,21 @@ namespace MpmOtm
     NodalSystem<dim>                             &system,
     const MassMatrix<dim>                        &mass_matrix,
     const MaterialPoints<dim>                    &material_points,
+    const ParticleTransfer<dim>                  &particle_transfer,
     const ParticleShapeData<dim>                 &shape_data,
     const typename NodalSystem<dim>::Constraints &constraints,
     const double,
     const double) const
   {
     system.assemble_momentum(material_points, shape_data);
+    if (particle_transfer.is_affine())
+      {
+        particle_transfer.add_affine_momentum(material_points,
+                                              shape_data,
+                                              system);
+        for (unsigned int c = 0; c < dim; ++c)
+          system.momentum[c].compress(VectorOperation::add);
+      }
     for (unsigned int c = 0; c < dim; ++c)
       mass_matrix.solve(system,
                         shape_data,

@@ -8,6 +8,7 @@ namespace MpmOtm
     NodalSystem<dim>      &system,
     const MassMatrix<dim> &mass_matrix,
     const MaterialPoints<dim> &,
+    const ParticleTransfer<dim> &,
     const ParticleShapeData<dim>                 &shape_data,
     const typename NodalSystem<dim>::Constraints &constraints,
     const double                                  dt,

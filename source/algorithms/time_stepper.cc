@@ -24,6 +24,7 @@ namespace MpmOtm
                                 BoundaryConditions<dim>    &boundary_conditions,
                                 const LocalDamping<dim>    &damping,
                                 VolumetricLockingRemedy<dim> *locking_remedy,
+                                const ParticleTransfer<dim>  &particle_transfer,
                                 TimerOutput                  &timer)
     : material_points(material_points)
     , shape_functions(shape_functions)
@@ -36,6 +37,7 @@ namespace MpmOtm
     , boundary_conditions(boundary_conditions)
     , damping(damping)
     , locking_remedy(locking_remedy)
+    , particle_transfer(particle_transfer)
     , timer(timer)
   {}
 
@@ -56,6 +58,7 @@ namespace MpmOtm
                       problem,
                       time,
                       !grid_motion.tractions_on_grid_faces());
+      particle_transfer.add_affine_momentum(material_points, data, system);
       grid_motion.add_face_tractions(problem, time, system);
       system.finish_assembly();
       if (damping.is_active(time))
@@ -87,20 +90,42 @@ namespace MpmOtm
       }
     using ParticleVelocity = typename NodalUpdate<dim>::ParticleVelocity;
     const ParticleVelocity particle_velocity = nodal_update.particle_velocity();
-    if (particle_velocity ==
-        ParticleVelocity::from_acceleration_before_projection)
-      {
-        TimerOutput::Scope scope(timer, "grid to particle");
-        advance_particle_velocities(dt);
-      }
     {
       TimerOutput::Scope scope(timer, "solve");
       boundary_conditions.make_velocity_constraints(system,
                                                     time + dt,
                                                     velocity_constraints);
+    }
+    if (particle_velocity ==
+        ParticleVelocity::from_acceleration_before_projection)
+      {
+        if (particle_transfer.flip_fraction() < 1.)
+          {
+            // PIC's part of the points' new velocities interpolates the
+            // nodal velocities of the grid's own update, M^-1 q + dt a
+            // (USL's), before MUSL projects the points' momenta.
+            TimerOutput::Scope scope(timer, "solve");
+            grid_velocities.compute_nodal_velocities(system,
+                                                     mass_matrix,
+                                                     material_points,
+                                                     particle_transfer,
+                                                     data,
+                                                     velocity_constraints,
+                                                     dt,
+                                                     dt);
+            boundary_conditions.constrain_velocities(system, time + dt);
+            for (unsigned int c = 0; c < dim; ++c)
+              system.velocity[c].update_ghost_values();
+          }
+        TimerOutput::Scope scope(timer, "grid to particle");
+        advance_particle_velocities(dt);
+      }
+    {
+      TimerOutput::Scope scope(timer, "solve");
       nodal_update.compute_nodal_velocities(system,
                                             mass_matrix,
                                             material_points,
+                                            particle_transfer,
                                             data,
                                             velocity_constraints,
                                             dt,
@@ -138,17 +163,51 @@ namespace MpmOtm
   {
     using Layout = PropertyLayout<dim>;
     const double *a[dim];
+    const double *v[dim];
     for (unsigned int c = 0; c < dim; ++c)
-      a[c] = system.acceleration[c].get_values();
+      {
+        a[c] = system.acceleration[c].get_values();
+        v[c] = system.velocity[c].get_values();
+      }
+    const double flip_fraction = particle_transfer.flip_fraction();
+    const bool   affine        = particle_transfer.is_affine();
+    std::vector<Tensor<1, dim>>             point_nodal_velocities;
     typename ParticleShapeData<dim>::Cursor functions(data);
     for (auto &particle : material_points.particle_handler())
       {
         const auto properties = particle.get_properties();
         const auto point      = functions.next();
+        if (flip_fraction == 1.)
+          {
+            for (unsigned int j = 0; j < point.n; ++j)
+              for (unsigned int c = 0; c < dim; ++c)
+                properties[Layout::velocity + c] +=
+                  dt * point.values[j] * a[c][point.indices[j]];
+            continue;
+          }
+        // FLIP's and PIC's velocities, blended; the nodal velocities are
+        // the grid's own (advance()).
+        Tensor<1, dim> flip = Layout::get_vector(properties, Layout::velocity);
+        Tensor<1, dim> pic;
+        if (point_nodal_velocities.size() < point.n)
+          point_nodal_velocities.resize(point.n);
         for (unsigned int j = 0; j < point.n; ++j)
           for (unsigned int c = 0; c < dim; ++c)
-            properties[Layout::velocity + c] +=
-              dt * point.values[j] * a[c][point.indices[j]];
+            {
+              const unsigned int i = point.indices[j];
+              flip[c] += dt * point.values[j] * a[c][i];
+              pic[c] += point.values[j] * v[c][i];
+              point_nodal_velocities[j][c] = v[c][i];
+            }
+        Layout::set_vector(properties,
+                           Layout::velocity,
+                           flip_fraction * flip + (1. - flip_fraction) * pic);
+        if (affine)
+          particle_transfer.store_affine_velocity(
+            properties,
+            particle.get_location(),
+            point,
+            point_nodal_velocities.data());
       }
   }
 
@@ -200,6 +259,9 @@ namespace MpmOtm
     const bool velocity_from_displacement =
       particle_velocity ==
       NodalUpdate<dim>::ParticleVelocity::from_displacement;
+    // FLIP's share alpha of the new velocity (the rest is PIC's) and APIC.
+    const double flip_fraction = particle_transfer.flip_fraction();
+    const bool   affine        = particle_transfer.is_affine();
 
     // The velocity of each point and its velocity gradient; the point moves
     // with the velocity. Without a remedy the point's F and stress follow
@@ -267,7 +329,22 @@ namespace MpmOtm
                     dt * point.values[j] * batch_acceleration[j][c];
             }
           if (velocity_from_acceleration)
-            Layout::set_vector(properties, Layout::velocity, advanced_velocity);
+            {
+              if (flip_fraction == 1.)
+                Layout::set_vector(properties,
+                                   Layout::velocity,
+                                   advanced_velocity);
+              else
+                Layout::set_vector(properties,
+                                   Layout::velocity,
+                                   flip_fraction * advanced_velocity +
+                                     (1. - flip_fraction) * point_velocity);
+              if (affine)
+                particle_transfer.store_affine_velocity(properties,
+                                                        particle.get_location(),
+                                                        point,
+                                                        batch_velocity.data());
+            }
           else if (velocity_from_displacement)
             Layout::set_vector(properties, Layout::velocity, point_velocity);
           particle.set_location(particle.get_location() + dt * point_velocity);

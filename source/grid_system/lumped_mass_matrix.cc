@@ -11,6 +11,15 @@ namespace MpmOtm
 
 
   template <int dim>
+  bool
+  LumpedMassMatrix<dim>::is_lumped() const
+  {
+    return true;
+  }
+
+
+
+  template <int dim>
   void
   LumpedMassMatrix<dim>::vmult(const NodalSystem<dim> &system,
                                const ParticleShapeData<dim> &,

@@ -187,7 +187,13 @@ namespace MpmOtm
           for (const std::string quantity : {"force", "displacement"})
             for (unsigned int d = 0; d < dim; ++d)
               statistics << ',' << name << '_' << quantity << '_' << "xyz"[d];
-        statistics << ",supplied_work,grid_kinetic_energy\n";
+        statistics << ",supplied_work,grid_kinetic_energy";
+        if (dim == 2)
+          statistics << ",angular_momentum";
+        if (dim == 3)
+          statistics << ",angular_momentum_x,angular_momentum_y,"
+                        "angular_momentum_z";
+        statistics << '\n';
         statistics.close();
         if (!statistics)
           problem = "Could not write <" + name +
@@ -432,7 +438,13 @@ namespace MpmOtm
           file << ',' << displacement[d];
       }
     file << ',' << statistics.supplied_work << ','
-         << statistics.grid_kinetic_energy << '\n';
+         << statistics.grid_kinetic_energy;
+    if (dim == 2)
+      file << ',' << statistics.angular_momentum[2];
+    if (dim == 3)
+      for (unsigned int d = 0; d < 3; ++d)
+        file << ',' << statistics.angular_momentum[d];
+    file << '\n';
     file.close();
     return file ? std::string() :
                   "Could not write <" + name +

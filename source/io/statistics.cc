@@ -21,8 +21,9 @@ namespace MpmOtm
     has_displacement_error = problem.has_exact_solution();
     has_stress_error       = problem.has_exact_stress();
 
-    // kinetic, strain, mass, momentum (3), squared errors (3), gravitational
-    double               sums[10] = {};
+    // kinetic, strain, mass, momentum (3), squared errors (3), gravitational,
+    // angular momentum (3)
+    double               sums[13] = {};
     const Tensor<1, dim> gravity  = problem.gravity(time);
     for (const auto &particle : material_points.particle_handler())
       {
@@ -42,6 +43,13 @@ namespace MpmOtm
         sums[9] -= m * (gravity * (particle.get_location() - X));
         for (unsigned int d = 0; d < dim; ++d)
           sums[3 + d] += m * v[d];
+        const Point<dim> &x = particle.get_location();
+        if constexpr (dim == 2)
+          sums[12] += m * (x[0] * v[1] - x[1] * v[0]);
+        if constexpr (dim == 3)
+          for (unsigned int d = 0; d < 3; ++d)
+            sums[10 + d] += m * (x[(d + 1) % 3] * v[(d + 2) % 3] -
+                                 x[(d + 2) % 3] * v[(d + 1) % 3]);
         if (has_displacement_error)
           {
             const double error = ((particle.get_location() - X) -
@@ -58,9 +66,9 @@ namespace MpmOtm
       }
 
     const MPI_Comm communicator = material_points.communicator();
-    Utilities::MPI::sum(ArrayView<const double>(sums, 10),
+    Utilities::MPI::sum(ArrayView<const double>(sums, 13),
                         communicator,
-                        ArrayView<double>(sums, 10));
+                        ArrayView<double>(sums, 13));
     const double n_points =
       static_cast<double>(material_points.n_global_points());
 
@@ -73,6 +81,8 @@ namespace MpmOtm
     displacement_l2_error  = std::sqrt(sums[7]);
     stress_rms_error       = std::sqrt(sums[8] / n_points);
     gravitational_energy   = sums[9];
+    for (unsigned int d = 0; d < 3; ++d)
+      angular_momentum[d] = sums[10 + d];
   }
 
 

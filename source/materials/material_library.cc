@@ -51,6 +51,7 @@ namespace MpmOtm
     first_variable.clear();
     n_variables.clear();
     n_total = PropertyLayout<dim>::n_fixed_properties;
+    point_variable_names.clear();
     for (const auto &name : names)
       {
         prm.enter_subsection(subsection_of(name));
@@ -185,6 +186,21 @@ namespace MpmOtm
 
 
   template <int dim>
+  unsigned int
+  MaterialLibrary<dim>::add_point_variables(
+    const std::vector<std::string> &variable_names)
+  {
+    const unsigned int first = n_total;
+    point_variable_names.insert(point_variable_names.end(),
+                                variable_names.begin(),
+                                variable_names.end());
+    n_total += variable_names.size();
+    return first;
+  }
+
+
+
+  template <int dim>
   std::vector<std::string>
   MaterialLibrary<dim>::internal_variable_names() const
   {
@@ -192,6 +208,9 @@ namespace MpmOtm
     for (unsigned int id = 0; id < materials.size(); ++id)
       for (const auto &variable : materials[id]->internal_variables())
         result.push_back(names[id] + "." + variable);
+    result.insert(result.end(),
+                  point_variable_names.begin(),
+                  point_variable_names.end());
     return result;
   }
 

@@ -576,6 +576,33 @@ namespace MpmOtm
     const BoundingBox<dim>               &box,
     std::vector<types::global_dof_index> &functions) const
   {
+    functions.clear();
+    for (const auto global : locally_owned_functions())
+      if (box.point_inside(greville_point(global), 1e-10))
+        functions.push_back(global);
+    return true;
+  }
+
+
+
+  template <int dim>
+  bool
+  BSplines<dim>::function_points(const Utilities::MPI::Partitioner &partitioner,
+                                 std::vector<Point<dim>> &points) const
+  {
+    points.resize(partitioner.locally_owned_size() +
+                  partitioner.n_ghost_indices());
+    for (unsigned int local = 0; local < points.size(); ++local)
+      points[local] = greville_point(partitioner.local_to_global(local));
+    return true;
+  }
+
+
+
+  template <int dim>
+  Point<dim>
+  BSplines<dim>::greville_point(const types::global_dof_index global) const
+  {
     // The open knot vector of direction d repeats its end knots p times
     // more: U = (k_0, ..., k_0, k_0, k_1, ..., k_n, k_n, ..., k_n).
     // Function i has the knots U_i, ..., U_{i+p+1}.
@@ -583,21 +610,15 @@ namespace MpmOtm
       const unsigned int last = knots[d].size() - 1;
       return knots[d][std::min(k < p ? 0u : k - p, last)];
     };
-    functions.clear();
-    for (const auto global : locally_owned_functions())
+    const auto i = multi_index(global);
+    Point<dim> greville;
+    for (unsigned int d = 0; d < dim; ++d)
       {
-        const auto i = multi_index(global);
-        Point<dim> greville;
-        for (unsigned int d = 0; d < dim; ++d)
-          {
-            for (unsigned int k = 1; k <= p; ++k)
-              greville[d] += knot(d, i[d] + k);
-            greville[d] /= p;
-          }
-        if (box.point_inside(greville, 1e-10))
-          functions.push_back(global);
+        for (unsigned int k = 1; k <= p; ++k)
+          greville[d] += knot(d, i[d] + k);
+        greville[d] /= p;
       }
-    return true;
+    return greville;
   }
 
 

@@ -423,6 +423,22 @@ namespace MpmOtm
 
 
   template <int dim>
+  bool
+  MaxEnt<dim>::function_points(const Utilities::MPI::Partitioner &partitioner,
+                               std::vector<Point<dim>>           &points) const
+  {
+    Assert(partitioner.locally_owned_range() ==
+               cloud.partition().locally_owned_range() &&
+             partitioner.ghost_indices() == cloud.partition().ghost_indices(),
+           ExcInternalError());
+    (void)partitioner;
+    points = cloud.positions();
+    return true;
+  }
+
+
+
+  template <int dim>
   double
   MaxEnt<dim>::support_radius(const types::global_dof_index i) const
   {

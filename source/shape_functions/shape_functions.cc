@@ -33,6 +33,38 @@ namespace MpmOtm
 
 
 
+  template <int dim>
+  bool
+  ShapeFunctions<dim>::function_points(
+    const Utilities::MPI::Partitioner &partitioner,
+    std::vector<Point<dim>>           &points) const
+  {
+    const unsigned int n_local =
+      partitioner.locally_owned_size() + partitioner.n_ghost_indices();
+    points.assign(n_local, Point<dim>());
+    std::vector<bool> found(n_local, false);
+    for (const auto &cell :
+         dof_handler().get_triangulation().active_cell_iterators())
+      if (!cell->is_artificial())
+        for (const unsigned int v : cell->vertex_indices())
+          {
+            const auto function = vertex_function(cell, v);
+            if (function == numbers::invalid_dof_index)
+              return false;
+            if (partitioner.in_local_range(function) ||
+                partitioner.is_ghost_entry(function))
+              {
+                const unsigned int local =
+                  partitioner.global_to_local(function);
+                points[local] = cell->vertex(v);
+                found[local]  = true;
+              }
+          }
+    return std::find(found.begin(), found.end(), false) == found.end();
+  }
+
+
+
   template class ShapeFunctions<1>;
   template class ShapeFunctions<2>;
   template class ShapeFunctions<3>;

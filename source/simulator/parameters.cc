@@ -3,6 +3,7 @@
 
 
 #include <mpm_otm/algorithms/method.h>
+#include <mpm_otm/algorithms/particle_transfer.h>
 #include <mpm_otm/algorithms/quasi_static_end.h>
 #include <mpm_otm/algorithms/volumetric_locking_remedy.h>
 #include <mpm_otm/base/plugins.h>
@@ -133,6 +134,7 @@ namespace MpmOtm
         "and blew up on the user problems G1-G3, where MUSL ran: manual, "
         "'Your own problem'), USL for Unified (journal Alg. 3). OTM has its "
         "own update (Eq. 51) and takes no other.");
+    ParticleTransfer<dim>::declare_parameters(prm);
     prm.declare_entry("Shape functions",
                       "linear",
                       Patterns::Selection(
@@ -263,6 +265,13 @@ namespace MpmOtm
     mass_matrix =
       PluginRegistry<MassMatrix<dim>>::create(prm.get("Mass matrix"));
     mass_matrix->parse_parameters(prm);
+    particle_transfer = std::make_unique<ParticleTransfer<dim>>();
+    particle_transfer->parse_parameters(prm);
+    particle_transfer->check(*nodal_update,
+                             prm.get("Method"),
+                             method->fixed_grid(),
+                             mass_matrix->is_lumped());
+    particle_transfer->reserve_point_variables(*materials);
     deactivation_threshold = prm.get_double("Deactivation threshold");
     {
       std::string remedy       = prm.get("Volumetric locking remedy");

@@ -5,6 +5,7 @@
 #include <deal.II/base/timer.h>
 
 #include <mpm_otm/algorithms/grid_motion.h>
+#include <mpm_otm/algorithms/particle_transfer.h>
 #include <mpm_otm/algorithms/stable_time_step.h>
 #include <mpm_otm/algorithms/volumetric_locking_remedy.h>
 #include <mpm_otm/base/activity.h>
@@ -142,6 +143,7 @@ namespace MpmOtm
       }
     if (locking_remedy)
       locking_remedy->initialize(*shape_functions, *system, *materials);
+    particle_transfer->initialize(*shape_functions, system->partitioner());
     // The material that sets the time step, for the messages below: a
     // wrong modulus or density shows up first as an absurd time step.
     std::ostringstream fastest;
@@ -181,7 +183,8 @@ namespace MpmOtm
                                      *mass_matrix,
                                      *materials,
                                      *problem_description,
-                                     nodal_update->particle_velocity());
+                                     particle_transfer->velocity_for_stability(
+                                       nodal_update->particle_velocity()));
     stable_step = stable.time_step;
     if (automatic_time_step)
       time_step = courant_factor * stable.time_step;
@@ -297,6 +300,8 @@ namespace MpmOtm
           << std::defaultfloat << std::endl;
     if (locking_remedy)
       pcout << locking_remedy->description() << std::endl;
+    if (particle_transfer->flip_fraction() < 1.)
+      pcout << particle_transfer->description() << std::endl;
     if (resume)
       pcout << "resumed from <" << resumed_from << ">, written after time step "
             << resumed_step << " (t = " << current_time << ")" << std::endl;

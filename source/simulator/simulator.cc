@@ -6,6 +6,7 @@
 #include <mpm_otm/algorithms/energy_monitor.h>
 #include <mpm_otm/algorithms/grid_motion.h>
 #include <mpm_otm/algorithms/nodal_update.h>
+#include <mpm_otm/algorithms/particle_transfer.h>
 #include <mpm_otm/algorithms/quasi_static_end.h>
 #include <mpm_otm/algorithms/stable_time_step.h>
 #include <mpm_otm/algorithms/time_stepper.h>
@@ -73,6 +74,7 @@ namespace MpmOtm
                                *boundary_conditions,
                                *damping,
                                locking_remedy.get(),
+                               *particle_transfer,
                                timer);
 
       const unsigned int n_steps =
@@ -91,7 +93,9 @@ namespace MpmOtm
         statistics.supplied_work =
           Utilities::MPI::sum(stepper.supplied_work(), communicator);
         statistics.grid_kinetic_energy = system->kinetic_energy();
-        statistics.boundary_names      = boundary_conditions->names();
+        particle_transfer
+          ->add_affine_angular_momentum(*points, statistics.angular_momentum);
+        statistics.boundary_names = boundary_conditions->names();
         statistics.boundary_reactions =
           boundary_conditions->reactions_and_displacements(regular_output);
         output->write(step,

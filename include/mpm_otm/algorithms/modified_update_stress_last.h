@@ -22,6 +22,7 @@ namespace MpmOtm
       NodalSystem<dim>                             &system,
       const MassMatrix<dim>                        &mass_matrix,
       const MaterialPoints<dim>                    &material_points,
+      const ParticleTransfer<dim>                  &particle_transfer,
       const ParticleShapeData<dim>                 &shape_data,
       const typename NodalSystem<dim>::Constraints &constraints,
       const double                                  dt,

@@ -9,6 +9,8 @@ namespace MpmOtm
 {
   template <int dim>
   class MaterialPoints;
+  template <int dim>
+  class ParticleTransfer;
 
   /**
    * The form of the nodal update: how the nodal velocities v_i^{s+1} that
@@ -61,13 +63,15 @@ namespace MpmOtm
      * prescribed values: with a consistent mass matrix the free
      * coefficients feel the prescribed ones); @p previous_dt is the length
      * of the step before (equal to @p dt in the first step, where OTM sets
-     * x_p^{-1} = x_p^0 - dt v_p^0).
+     * x_p^{-1} = x_p^0 - dt v_p^0). A projection of the points' momenta
+     * (MUSL) adds the affine momenta of @p particle_transfer (APIC).
      */
     virtual void
     compute_nodal_velocities(
       NodalSystem<dim>                             &system,
       const MassMatrix<dim>                        &mass_matrix,
       const MaterialPoints<dim>                    &material_points,
+      const ParticleTransfer<dim>                  &particle_transfer,
       const ParticleShapeData<dim>                 &shape_data,
       const typename NodalSystem<dim>::Constraints &constraints,
       const double                                  dt,

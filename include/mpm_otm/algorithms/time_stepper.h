@@ -5,6 +5,8 @@
 
 #include <mpm_otm/algorithms/grid_motion.h>
 #include <mpm_otm/algorithms/nodal_update.h>
+#include <mpm_otm/algorithms/particle_transfer.h>
+#include <mpm_otm/algorithms/update_stress_last.h>
 #include <mpm_otm/algorithms/volumetric_locking_remedy.h>
 #include <mpm_otm/base/checkpoint_state.h>
 #include <mpm_otm/boundary_conditions/boundary_conditions.h>
@@ -65,6 +67,7 @@ namespace MpmOtm
                 BoundaryConditions<dim>      &boundary_conditions,
                 const LocalDamping<dim>      &damping,
                 VolumetricLockingRemedy<dim> *locking_remedy,
+                const ParticleTransfer<dim>  &particle_transfer,
                 TimerOutput                  &timer);
 
     /**
@@ -110,8 +113,10 @@ namespace MpmOtm
                                   const double             dt) const;
 
     /**
-     * v_p += dt sum_i phi_i a_i for every point (MUSL, before its
-     * projection).
+     * The points' new velocities before MUSL projects them: v_p += dt
+     * sum_i phi_i a_i (FLIP), or blended with sum_i phi_i v_i of the grid's
+     * own nodal velocities in system.velocity (PIC, blend, APIC, which also
+     * stores the affine velocity).
      */
     void
     advance_particle_velocities(const double dt);
@@ -121,7 +126,7 @@ namespace MpmOtm
      * and updates F and the stress; it also advances the particle
      * velocities as @p particle_velocity says (in place for
      * ParticleVelocity::from_acceleration, so that USL reads each point's
-     * functions once per step).
+     * functions once per step, by the rule of the ParticleTransfer).
      */
     void
     update_particles(
@@ -140,8 +145,12 @@ namespace MpmOtm
     const LocalDamping<dim>    &damping;
     /// Null without a remedy.
     VolumetricLockingRemedy<dim> *locking_remedy;
+    const ParticleTransfer<dim>  &particle_transfer;
     TimerOutput                  &timer;
-    ParticleShapeData<dim>        data;
+    /// The grid's own nodal velocities M^-1 q + dt a, whose interpolation
+    /// is PIC's particle velocity also under MUSL.
+    UpdateStressLast<dim>  grid_velocities;
+    ParticleShapeData<dim> data;
     /// With a volumetric locking remedy: the velocity gradient and the
     /// property array of each point in this step, in the order of the
     /// particle handler.

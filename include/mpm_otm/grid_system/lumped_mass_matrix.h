@@ -17,6 +17,12 @@ namespace MpmOtm
     static void
     declare_parameters(ParameterHandler &prm);
 
+    /**
+     * True: every row is lumped.
+     */
+    bool
+    is_lumped() const override;
+
     void
     vmult(const NodalSystem<dim>       &system,
           const ParticleShapeData<dim> &shape_data,

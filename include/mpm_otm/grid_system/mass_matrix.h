@@ -43,6 +43,16 @@ namespace MpmOtm
     }
 
     /**
+     * Whether the solves divide by the row-sum lumped masses in every row
+     * (a_i = f_i / m_i), as APIC's transfer assumes.
+     */
+    virtual bool
+    is_lumped() const
+    {
+      return false;
+    }
+
+    /**
      * Whether the solves need NodalSystem::material_boundary_functions().
      */
     virtual bool

@@ -48,6 +48,11 @@ namespace MpmOtm
     /// (NodalSystem::kinetic_energy(); the measure of the quasi-static
     /// end), set by the simulator.
     double grid_kinetic_energy = 0;
+    /// Angular momentum about the origin, sum_p m_p x_p x v_p (its z
+    /// component in 2D, 0 in 1D); with Particle velocity = APIC the points'
+    /// affine motion adds its part (ParticleTransfer), set by the
+    /// simulator.
+    double angular_momentum[3] = {0, 0, 0};
     /// Names of the named boundary conditions.
     std::vector<std::string> boundary_names;
     /// Their reactions (mean over the steps since the last output) and the

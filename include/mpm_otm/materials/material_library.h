@@ -100,15 +100,26 @@ namespace MpmOtm
     store(const StressState<dim> &state, const ArrayView<double> &properties);
 
     /**
-     * Number of doubles per point: the fixed properties and the internal
-     * variables of all materials.
+     * Number of doubles per point: the fixed properties, the internal
+     * variables of all materials and the point variables of
+     * add_point_variables().
      */
     unsigned int
     n_properties() const;
 
     /**
-     * Names of all internal variables, "<material>.<variable>" (in the order
-     * of their places), for output.
+     * Reserve one slot per name in every point's property array for a
+     * variable that is not a material's (e.g. APIC's affine velocity
+     * matrix) and return the place of the first; the slots follow those of
+     * the materials and are written out under @p names. Call after
+     * parse_parameters() and before the points are seeded.
+     */
+    unsigned int
+    add_point_variables(const std::vector<std::string> &names);
+
+    /**
+     * Names of all internal variables, "<material>.<variable>", and of the
+     * point variables (in the order of their places), for output.
      */
     std::vector<std::string>
     internal_variable_names() const;
@@ -125,6 +136,7 @@ namespace MpmOtm
     std::vector<unsigned int>                   first_variable;
     std::vector<unsigned int>                   n_variables;
     unsigned int                                n_total = 0;
+    std::vector<std::string>                    point_variable_names;
   };
 } // namespace MpmOtm
 

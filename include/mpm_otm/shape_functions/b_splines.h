@@ -124,6 +124,14 @@ namespace MpmOtm
       std::vector<types::global_dof_index> &functions) const override;
 
     /**
+     * The Greville points of the relevant functions: the coefficients of
+     * the field x (B-splines reproduce linear fields).
+     */
+    bool
+    function_points(const Utilities::MPI::Partitioner &partitioner,
+                    std::vector<Point<dim>>           &points) const override;
+
+    /**
      * The DoFHandler of FE_Bernstein(p) on the grid.
      */
     const DoFHandler<dim> &
@@ -208,6 +216,13 @@ namespace MpmOtm
      */
     void
     distribute_functions();
+
+    /**
+     * The Greville point of function @p global (owned or relevant): the
+     * average of its p inner knots in each direction.
+     */
+    Point<dim>
+    greville_point(const types::global_dof_index global) const;
 
     /**
      * Extraction operators of direction @p d from the current knots, by

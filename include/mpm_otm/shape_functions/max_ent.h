@@ -148,6 +148,13 @@ namespace MpmOtm
                 std::vector<Tensor<1, dim>>          &gradients) const;
 
     /**
+     * The nodes of the relevant functions.
+     */
+    bool
+    function_points(const Utilities::MPI::Partitioner &partitioner,
+                    std::vector<Point<dim>>           &points) const override;
+
+    /**
      * The current position of the node of function @p i.
      */
     const Point<dim> &

@@ -260,6 +260,20 @@ namespace MpmOtm
                      std::vector<types::global_dof_index> &functions) const;
 
     /**
+     * The point x_i each locally relevant function belongs to, in the order
+     * of @p partitioner's local indices, such that sum_i phi_i(x) x_i = x
+     * for a linearly complete family: the vertices of vertex_function() by
+     * default (linear functions, max-ent nodes), the Greville points of
+     * B-splines. APIC transfers the points' affine velocity with them.
+     * Returns false if the family's functions do not belong to points or
+     * the points of some relevant function are not known on this rank. Not
+     * collective.
+     */
+    virtual bool
+    function_points(const Utilities::MPI::Partitioner &partitioner,
+                    std::vector<Point<dim>>           &points) const;
+
+    /**
      * The DoFHandler of the finite element the cells carry.
      */
     virtual const DoFHandler<dim> &

@@ -31,6 +31,8 @@ namespace MpmOtm
   template <int dim>
   class NodalUpdate;
   template <int dim>
+  class ParticleTransfer;
+  template <int dim>
   class GridMotion;
   template <int dim>
   class MaterialLibrary;
@@ -208,6 +210,7 @@ namespace MpmOtm
     std::unique_ptr<NodalSystem<dim>>        system;
     std::unique_ptr<MassMatrix<dim>>         mass_matrix;
     std::unique_ptr<NodalUpdate<dim>>        nodal_update;
+    std::unique_ptr<ParticleTransfer<dim>>   particle_transfer;
     std::unique_ptr<GridMotion<dim>>         grid_motion;
     std::unique_ptr<MaterialLibrary<dim>>    materials;
     std::unique_ptr<Problem<dim>>            problem_description;
