@@ -137,7 +137,10 @@ namespace MpmOtm
     }
     {
       TimerOutput::Scope scope(timer, "grid to particle");
-      update_particles(dt, particle_velocity);
+      if (particle_transfer.flip_fraction() == 1.)
+        update_particles<false>(dt, particle_velocity);
+      else
+        update_particles<true>(dt, particle_velocity);
     }
     {
       TimerOutput::Scope scope(timer, "move grid, locate particles");
@@ -240,6 +243,7 @@ namespace MpmOtm
 
 
   template <int dim>
+  template <bool other_rule>
   void
   TimeStepper<dim>::update_particles(
     const double                                      dt,
@@ -330,20 +334,23 @@ namespace MpmOtm
             }
           if (velocity_from_acceleration)
             {
-              if (flip_fraction == 1.)
+              if constexpr (!other_rule)
                 Layout::set_vector(properties,
                                    Layout::velocity,
                                    advanced_velocity);
               else
-                Layout::set_vector(properties,
-                                   Layout::velocity,
-                                   flip_fraction * advanced_velocity +
-                                     (1. - flip_fraction) * point_velocity);
-              if (affine)
-                particle_transfer.store_affine_velocity(properties,
-                                                        particle.get_location(),
-                                                        point,
-                                                        batch_velocity.data());
+                {
+                  Layout::set_vector(properties,
+                                     Layout::velocity,
+                                     flip_fraction * advanced_velocity +
+                                       (1. - flip_fraction) * point_velocity);
+                  if (affine)
+                    particle_transfer.store_affine_velocity(
+                      properties,
+                      particle.get_location(),
+                      point,
+                      batch_velocity.data());
+                }
             }
           else if (velocity_from_displacement)
             Layout::set_vector(properties, Layout::velocity, point_velocity);

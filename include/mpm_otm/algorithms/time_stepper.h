@@ -126,8 +126,11 @@ namespace MpmOtm
      * and updates F and the stress; it also advances the particle
      * velocities as @p particle_velocity says (in place for
      * ParticleVelocity::from_acceleration, so that USL reads each point's
-     * functions once per step, by the rule of the ParticleTransfer).
+     * functions once per step, by the rule of the ParticleTransfer; the
+     * pass is compiled apart for FLIP, @p other_rule false, so that the
+     * default pays nothing for the other rules).
      */
+    template <bool other_rule>
     void
     update_particles(
       const double                                      dt,
