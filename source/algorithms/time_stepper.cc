@@ -79,12 +79,12 @@ namespace MpmOtm
                             system.force[c],
                             system.acceleration[c],
                             acceleration_constraints[c]);
-        boundary_conditions.measure_gaps(material_points, data, system);
-        boundary_conditions.constrain_accelerations(system,
-                                                    mass_matrix,
-                                                    data,
-                                                    time,
-                                                    dt);
+        boundary_conditions.correct_accelerations(system,
+                                                  mass_matrix,
+                                                  material_points,
+                                                  data,
+                                                  time,
+                                                  dt);
         for (unsigned int c = 0; c < dim; ++c)
           system.acceleration[c].update_ghost_values();
       }
@@ -113,7 +113,7 @@ namespace MpmOtm
                                                      velocity_constraints,
                                                      dt,
                                                      dt);
-            boundary_conditions.constrain_velocities(system, time + dt);
+            boundary_conditions.correct_velocities(system, time + dt);
             for (unsigned int c = 0; c < dim; ++c)
               system.velocity[c].update_ghost_values();
           }
@@ -131,7 +131,7 @@ namespace MpmOtm
                                             dt,
                                             previous_dt > 0. ? previous_dt :
                                                                dt);
-      boundary_conditions.constrain_velocities(system, time + dt);
+      boundary_conditions.correct_velocities(system, time + dt);
       for (unsigned int c = 0; c < dim; ++c)
         system.velocity[c].update_ghost_values();
     }

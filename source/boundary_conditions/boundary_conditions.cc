@@ -1,13 +1,12 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 
+#include <mpm_otm/base/plugins.h>
 #include <mpm_otm/base/subsection_names.h>
 #include <mpm_otm/boundary_conditions/boundary_conditions.h>
 #include <mpm_otm/grid/background_grid.h>
 #include <mpm_otm/grid_system/mass_matrix.h>
 #include <mpm_otm/grid_system/nodal_system.h>
-#include <mpm_otm/material_points/material_points.h>
-#include <mpm_otm/shape_functions/particle_shape_data.h>
 #include <mpm_otm/shape_functions/shape_functions.h>
 
 #include <algorithm>
@@ -61,19 +60,15 @@ namespace MpmOtm
     ParameterHandler               &prm,
     const std::vector<std::string> &names)
   {
-    const std::string zeros = (dim == 1 ? "0" : dim == 2 ? "0; 0" : "0; 0; 0");
+    using Registry = PluginRegistry<Condition<dim>>;
     for (const auto &name : names)
       {
         prm.enter_subsection("Boundary " + name);
-        prm.declare_entry(
-          "Type",
-          "fixed",
-          Patterns::Selection("fixed|slip|friction|velocity"),
-          "fixed: velocity zero; slip: normal velocity zero, tangential "
-          "free (the boundary must be planar); friction: Coulomb friction "
-          "with 'Friction coefficient' (the material may separate from the "
-          "wall; planar boundary); velocity: the components 'Velocity "
-          "components' prescribed to 'Velocity', the others free.");
+        prm.declare_entry("Type",
+                          "fixed",
+                          Patterns::Selection(Registry::selection()),
+                          "What the condition does:" +
+                            Registry::documentation());
         prm.declare_entry("Boundary ids",
                           "",
                           Patterns::List(Patterns::Integer(0)),
@@ -93,21 +88,7 @@ namespace MpmOtm
                           "",
                           Patterns::List(Patterns::Double(), 0, dim),
                           "Upper corner of that box.");
-        prm.declare_entry("Friction coefficient",
-                          "0",
-                          Patterns::Double(),
-                          "Type = friction: Coulomb coefficient mu >= 0.");
-        prm.declare_entry("Velocity",
-                          zeros,
-                          Patterns::Anything(),
-                          "Type = velocity: dim expressions in t (m/s), "
-                          "separated by ';'.");
-        prm.declare_entry("Velocity components",
-                          std::string("xyz").substr(0, 1) +
-                            (dim > 1 ? ", y" : "") + (dim > 2 ? ", z" : ""),
-                          Patterns::List(Patterns::Selection("x|y|z")),
-                          "Type = velocity: the components prescribed; the "
-                          "others are free.");
+        Registry::declare_parameters(prm);
         prm.leave_subsection();
       }
   }
@@ -119,26 +100,24 @@ namespace MpmOtm
   BoundaryConditions<dim>::parse_parameters(ParameterHandler &prm)
   {
     conditions.clear();
+    types.clear();
     for (const auto &name : SubsectionNames::names_in(prm, "Boundaries"))
       {
         const std::string path = "Boundary " + name + "/";
         prm.enter_subsection("Boundary " + name);
-        Condition condition;
-        condition.name         = name;
         const std::string type = prm.get("Type");
-        condition.type         = type == "fixed"    ? Type::fixed :
-                                 type == "slip"     ? Type::slip :
-                                 type == "friction" ? Type::friction :
-                                                      Type::velocity;
+        auto condition         = PluginRegistry<Condition<dim>>::create(type);
+        ConditionNodes<dim> &where = condition->where;
+        where.name                 = name;
         for (const int id : Utilities::string_to_int(
                Utilities::split_string_list(prm.get("Boundary ids"))))
-          condition.boundary_ids.push_back(id);
+          where.boundary_ids.push_back(id);
         const auto lower = Utilities::string_to_double(
           Utilities::split_string_list(prm.get("Box lower corner")));
         const auto upper = Utilities::string_to_double(
           Utilities::split_string_list(prm.get("Box upper corner")));
-        condition.on_box = condition.boundary_ids.empty();
-        if (condition.on_box)
+        where.on_box = where.boundary_ids.empty();
+        if (where.on_box)
           {
             AssertThrow(lower.size() == dim && upper.size() == dim,
                         ExcMessage(path +
@@ -154,9 +133,8 @@ namespace MpmOtm
                             ExcMessage(path + "Box upper corner must not be "
                                               "below Box lower corner."));
               }
-            condition.box = BoundingBox<dim>(std::make_pair(p1, p2));
-            AssertThrow(condition.type == Type::fixed ||
-                          condition.type == Type::velocity,
+            where.box = BoundingBox<dim>(std::make_pair(p1, p2));
+            AssertThrow(!condition->needs_normal(),
                         ExcMessage(path + "Type = " + type +
                                    " needs a boundary with a normal: give "
                                    "Boundary ids (a box of nodes takes "
@@ -167,37 +145,13 @@ namespace MpmOtm
                       ExcMessage(path + "give either Boundary ids or a box "
                                         "(Box lower/upper corner), not "
                                         "both."));
-        condition.friction_coefficient = prm.get_double("Friction coefficient");
-        AssertThrow(condition.friction_coefficient >= 0.,
-                    ExcMessage(path + "Friction coefficient = " +
-                               prm.get("Friction coefficient") +
-                               " must be >= 0."));
-        condition.components.fill(condition.type != Type::velocity);
-        if (condition.type == Type::velocity)
-          {
-            for (const auto &component :
-                 Utilities::split_string_list(prm.get("Velocity components")))
-              {
-                const unsigned int c = component[0] - 'x';
-                AssertThrow(c < dim,
-                            ExcMessage(path + "Velocity components: <" +
-                                       component + "> is not a direction in " +
-                                       std::to_string(dim) + "D."));
-                condition.components[c] = true;
-              }
-            // The velocity is a function of time only (the condition's
-            // nodes move as one).
-            condition.velocity =
-              std::make_unique<ParsedExpression<dim>>(prm.get("Velocity"),
-                                                      dim,
-                                                      true,
-                                                      path + "Velocity",
-                                                      false);
-            condition.velocity->vector_value(Point<dim>(), 0.);
-          }
+        condition->parse_parameters(prm);
         prm.leave_subsection();
         conditions.push_back(std::move(condition));
+        types.push_back(type);
       }
+    reaction_sums.assign(conditions.size(), Tensor<1, dim>());
+    n_steps.assign(conditions.size(), 0);
   }
 
 
@@ -216,125 +170,42 @@ namespace MpmOtm
   BoundaryConditions<dim>::setup(const ShapeFunctions<dim> &shape_functions,
                                  const BackgroundGrid<dim> &grid)
   {
-    const auto &triangulation = grid.triangulation();
-    communicator              = triangulation.get_communicator();
-    functions                 = &shape_functions;
-    background_grid           = &grid;
-    const IndexSet owned      = shape_functions.locally_owned_functions();
-    for (auto &condition : conditions)
+    communicator         = grid.triangulation().get_communicator();
+    functions            = &shape_functions;
+    background_grid      = &grid;
+    const IndexSet owned = shape_functions.locally_owned_functions();
+    for (unsigned int b = 0; b < conditions.size(); ++b)
       {
-        const std::string path = "Boundary " + condition.name + "/";
-        condition.functions.clear();
-        if (condition.on_box)
+        ConditionNodes<dim> &where = conditions[b]->where;
+        where.functions.clear();
+        if (where.on_box)
           {
-            find_box_functions(condition);
+            find_box_functions(where);
             AssertThrow(
-              Utilities::MPI::sum(condition.functions.size(), communicator) > 0,
-              ExcMessage(path +
+              Utilities::MPI::sum(where.functions.size(), communicator) > 0,
+              ExcMessage(where.path() +
                          "Box lower corner, Box upper corner: the box holds "
                          "no node of the grid (linear, max-ent: no vertex; "
                          "B-splines: no Greville point), so the condition "
                          "would act on nothing; enlarge the box to hold the "
                          "nodes it should act on."));
-            refuse_nodes_on_box_sides(condition);
+            refuse_nodes_on_box_sides(where);
           }
         else
           {
-            for (const auto id : condition.boundary_ids)
+            for (const auto id : where.boundary_ids)
               for (const auto function : shape_functions.boundary_functions(id))
                 if (owned.is_element(function))
-                  condition.functions.push_back(
-                    owned.index_within_set(function));
-
-            // The outward normal: the mean of the normals of the condition's
-            // faces (on this rank, collected once), which must all be equal
-            // for slip and friction.
-            std::vector<Tensor<1, dim>> normals;
-            std::vector<Point<dim>>     centers;
-            double cell_depth = std::numeric_limits<double>::infinity();
-            std::vector<double> faces_per_id(condition.boundary_ids.size(), 0.);
-            for (const auto &cell : triangulation.active_cell_iterators())
-              if (cell->is_locally_owned())
-                for (const unsigned int f : cell->face_indices())
-                  if (cell->face(f)->at_boundary())
-                    {
-                      const auto id = std::find(condition.boundary_ids.begin(),
-                                                condition.boundary_ids.end(),
-                                                cell->face(f)->boundary_id());
-                      if (id == condition.boundary_ids.end())
-                        continue;
-                      faces_per_id[id - condition.boundary_ids.begin()] += 1.;
-                      normals.push_back(outward_normal<dim>(cell, f));
-                      centers.push_back(cell->face(f)->center());
-                      // Twice the distance from the face to the cell's
-                      // centre: the cell's depth for quadrilaterals and
-                      // hexahedra, two thirds (triangles) or a half
-                      // (tetrahedra) of it for simplices.
-                      cell_depth =
-                        std::min(cell_depth,
-                                 2. *
-                                   std::abs(normals.back() *
-                                            (cell->center() - centers.back())));
-                    }
-            Tensor<1, dim> sum;
-            for (const auto &normal : normals)
-              sum += normal;
-            double n_faces = normals.size();
-            sum            = Utilities::MPI::sum(sum, communicator);
-            n_faces        = Utilities::MPI::sum(n_faces, communicator);
-            Utilities::MPI::sum(faces_per_id, communicator, faces_per_id);
-            // Every listed id must have faces: one without any would be
-            // a condition acting on nothing.
-            for (unsigned int i = 0; i < faces_per_id.size(); ++i)
-              if (!(faces_per_id[i] > 0))
-                {
-                  std::string ids;
-                  for (const auto id : grid.boundary_ids())
-                    ids += (ids.empty() ? "" : ", ") + std::to_string(id);
-                  AssertThrow(false,
-                              ExcMessage(
-                                path +
-                                "Boundary ids: no face of the grid "
-                                "has the id " +
-                                std::to_string(condition.boundary_ids[i]) +
-                                "; the grid's boundary ids are " + ids +
-                                " (box grids: the sides 0 to " +
-                                std::to_string(2 * dim - 1) +
-                                "; Mesh file: its physical tags, 0 on "
-                                "untagged faces)."));
-                }
-            // Faces that face each other (e.g. sides 0 and 1 in one
-            // condition) have no mean normal: not planar.
-            const bool has_normal = sum.norm() > 1e-8 * n_faces;
-            condition.normal =
-              has_normal ? Tensor<1, dim>(sum / sum.norm()) : Tensor<1, dim>();
-            double deviation = has_normal ? 0. : 1.;
-            double offset    = 0.;
-            for (const auto &normal : normals)
-              deviation =
-                std::max(deviation, (normal - condition.normal).norm());
-            for (const auto &center : centers)
-              offset += condition.normal * center;
-            deviation = Utilities::MPI::max(deviation, communicator);
-            condition.wall_offset =
-              Utilities::MPI::sum(offset, communicator) / n_faces;
-            condition.cell_depth =
-              Utilities::MPI::min(cell_depth, communicator);
-            AssertThrow(deviation < 1e-8 || condition.type == Type::fixed ||
-                          condition.type == Type::velocity,
-                        ExcMessage(path + "Type = slip and friction need a "
-                                          "planar boundary, but the faces "
-                                          "of these Boundary ids have "
-                                          "different normals; give each "
-                                          "planar part its own id."));
+                  where.functions.push_back(owned.index_within_set(function));
+            find_normal(where, conditions[b]->needs_normal());
           }
-        std::sort(condition.functions.begin(), condition.functions.end());
-        condition.functions.erase(std::unique(condition.functions.begin(),
-                                              condition.functions.end()),
-                                  condition.functions.end());
-        condition.reaction_sum = Tensor<1, dim>();
-        condition.displacement = Tensor<1, dim>();
-        condition.n_steps      = 0;
+        std::sort(where.functions.begin(), where.functions.end());
+        where.functions.erase(std::unique(where.functions.begin(),
+                                          where.functions.end()),
+                              where.functions.end());
+        where.displacement = Tensor<1, dim>();
+        reaction_sums[b]   = Tensor<1, dim>();
+        n_steps[b]         = 0;
       }
   }
 
@@ -342,52 +213,97 @@ namespace MpmOtm
 
   template <int dim>
   void
-  BoundaryConditions<dim>::check_travel_into_grid(const double end_time) const
+  BoundaryConditions<dim>::find_normal(ConditionNodes<dim> &where,
+                                       const bool           needs_normal) const
+  {
+    const BackgroundGrid<dim> &grid          = *background_grid;
+    const auto                &triangulation = grid.triangulation();
+    const std::string          path          = where.path();
+    // The outward normal: the mean of the normals of the condition's
+    // faces (on this rank, collected once), which must all be equal
+    // for slip and friction.
+    std::vector<Tensor<1, dim>> normals;
+    std::vector<Point<dim>>     centers;
+    double              cell_depth = std::numeric_limits<double>::infinity();
+    std::vector<double> faces_per_id(where.boundary_ids.size(), 0.);
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const unsigned int f : cell->face_indices())
+          if (cell->face(f)->at_boundary())
+            {
+              const auto id = std::find(where.boundary_ids.begin(),
+                                        where.boundary_ids.end(),
+                                        cell->face(f)->boundary_id());
+              if (id == where.boundary_ids.end())
+                continue;
+              faces_per_id[id - where.boundary_ids.begin()] += 1.;
+              normals.push_back(outward_normal<dim>(cell, f));
+              centers.push_back(cell->face(f)->center());
+              // Twice the distance from the face to the cell's
+              // centre: the cell's depth for quadrilaterals and
+              // hexahedra, two thirds (triangles) or a half
+              // (tetrahedra) of it for simplices.
+              cell_depth =
+                std::min(cell_depth,
+                         2. * std::abs(normals.back() *
+                                       (cell->center() - centers.back())));
+            }
+    Tensor<1, dim> sum;
+    for (const auto &normal : normals)
+      sum += normal;
+    double n_faces = normals.size();
+    sum            = Utilities::MPI::sum(sum, communicator);
+    n_faces        = Utilities::MPI::sum(n_faces, communicator);
+    Utilities::MPI::sum(faces_per_id, communicator, faces_per_id);
+    // Every listed id must have faces: one without any would be
+    // a condition acting on nothing.
+    for (unsigned int i = 0; i < faces_per_id.size(); ++i)
+      if (!(faces_per_id[i] > 0))
+        {
+          std::string ids;
+          for (const auto id : grid.boundary_ids())
+            ids += (ids.empty() ? "" : ", ") + std::to_string(id);
+          AssertThrow(false,
+                      ExcMessage(path +
+                                 "Boundary ids: no face of the grid "
+                                 "has the id " +
+                                 std::to_string(where.boundary_ids[i]) +
+                                 "; the grid's boundary ids are " + ids +
+                                 " (box grids: the sides 0 to " +
+                                 std::to_string(2 * dim - 1) +
+                                 "; Mesh file: its physical tags, 0 on "
+                                 "untagged faces)."));
+        }
+    // Faces that face each other (e.g. sides 0 and 1 in one
+    // condition) have no mean normal: not planar.
+    const bool has_normal = sum.norm() > 1e-8 * n_faces;
+    where.normal =
+      has_normal ? Tensor<1, dim>(sum / sum.norm()) : Tensor<1, dim>();
+    double deviation = has_normal ? 0. : 1.;
+    double offset    = 0.;
+    for (const auto &normal : normals)
+      deviation = std::max(deviation, (normal - where.normal).norm());
+    for (const auto &center : centers)
+      offset += where.normal * center;
+    deviation         = Utilities::MPI::max(deviation, communicator);
+    where.wall_offset = Utilities::MPI::sum(offset, communicator) / n_faces;
+    where.cell_depth  = Utilities::MPI::min(cell_depth, communicator);
+    AssertThrow(deviation < 1e-8 || !needs_normal,
+                ExcMessage(path + "Type = slip and friction need a "
+                                  "planar boundary, but the faces "
+                                  "of these Boundary ids have "
+                                  "different normals; give each "
+                                  "planar part its own id."));
+  }
+
+
+
+  template <int dim>
+  void
+  BoundaryConditions<dim>::check_run(const double end_time) const
   {
     for (const auto &condition : conditions)
-      {
-        if (condition.type != Type::velocity || condition.on_box ||
-            condition.normal.norm() == 0.)
-          continue;
-        // The displacement of the prescribed components against the outward
-        // normal, by the trapezoidal rule, and its largest value in the run.
-        const auto inward_velocity = [&](const double t) {
-          const Tensor<1, dim> velocity =
-            condition.velocity->vector_value(Point<dim>(), t);
-          double inward = 0.;
-          for (unsigned int d = 0; d < dim; ++d)
-            if (condition.components[d])
-              inward -= velocity[d] * condition.normal[d];
-          return inward;
-        };
-        const unsigned int n_intervals = 10000;
-        const double       dt          = end_time / n_intervals;
-        double previous = inward_velocity(0.), travel = 0., largest = 0.;
-        for (unsigned int i = 1; i <= n_intervals; ++i)
-          {
-            const double current = inward_velocity(i * dt);
-            travel += 0.5 * dt * (previous + current);
-            largest  = std::max(largest, travel);
-            previous = current;
-          }
-        std::ostringstream message;
-        message << "Boundary " << condition.name
-                << "/Velocity moves the grid side of its Boundary ids "
-                << largest
-                << " m into the grid before the End time, more than half the "
-                   "depth of the cells along that side ("
-                << 0.5 * condition.cell_depth
-                << " m). MPM's grid stays where it is: once the material "
-                   "has moved that far from the side, the side's nodes hold "
-                   "less and less of it, and the condition's reaction stops "
-                   "being the load on it (a platen loses its specimen). Give "
-                   "the condition Box lower corner and Box upper corner "
-                   "instead of Boundary ids (the box follows the "
-                   "displacement: manual, 'Boundary conditions'), or a "
-                   "shorter Time/End time.";
-        AssertThrow(!(largest > 0.5 * condition.cell_depth),
-                    ExcMessage(message.str()));
-      }
+      condition->check_run(end_time);
   }
 
 
@@ -395,7 +311,7 @@ namespace MpmOtm
   template <int dim>
   void
   BoundaryConditions<dim>::refuse_nodes_on_box_sides(
-    const Condition &condition) const
+    const ConditionNodes<dim> &where) const
   {
     // Move each side of the box in and out by a margin far above round-off
     // and far below any placement a user means; if that changes the nodes
@@ -406,8 +322,8 @@ namespace MpmOtm
       background_grid->box().get_boundary_points().first;
     const Point<dim> grid_upper =
       background_grid->box().get_boundary_points().second;
-    const Point<dim> lower = condition.box.get_boundary_points().first;
-    const Point<dim> upper = condition.box.get_boundary_points().second;
+    const Point<dim> lower = where.box.get_boundary_points().first;
+    const Point<dim> upper = where.box.get_boundary_points().second;
     for (unsigned int d = 0; d < dim; ++d)
       for (const bool upper_side : {false, true})
         {
@@ -429,7 +345,7 @@ namespace MpmOtm
                                                           inside.size()),
                                 communicator);
           std::ostringstream message;
-          message << "Boundary " << condition.name
+          message << "Boundary " << where.name
                   << "/Box lower corner, Box upper corner: " << on_side
                   << " node(s) of the grid lie on the box's side "
                   << static_cast<char>('x' + d) << " = " << side
@@ -446,25 +362,25 @@ namespace MpmOtm
 
   template <int dim>
   void
-  BoundaryConditions<dim>::find_box_functions(Condition &condition) const
+  BoundaryConditions<dim>::find_box_functions(ConditionNodes<dim> &where) const
   {
     IndexSet owned = functions->locally_owned_functions();
     owned.compress();
-    Point<dim> lower = condition.box.get_boundary_points().first;
-    Point<dim> upper = condition.box.get_boundary_points().second;
-    lower += condition.displacement;
-    upper += condition.displacement;
+    Point<dim> lower = where.box.get_boundary_points().first;
+    Point<dim> upper = where.box.get_boundary_points().second;
+    lower += where.displacement;
+    upper += where.displacement;
     const BoundingBox<dim>               box(std::make_pair(lower, upper));
     std::vector<types::global_dof_index> global;
     AssertThrow(functions->functions_in_box(box, global),
-                ExcMessage("Boundary " + condition.name +
+                ExcMessage("Boundary " + where.name +
                            "/Box lower corner: a condition on the nodes in "
                            "a box needs shape functions that belong to "
                            "points (linear, max-ent: vertices; B-splines: "
                            "Greville points); use Boundary ids instead."));
-    condition.functions.clear();
+    where.functions.clear();
     for (const auto function : global)
-      condition.functions.push_back(owned.index_within_set(function));
+      where.functions.push_back(owned.index_within_set(function));
   }
 
 
@@ -475,128 +391,9 @@ namespace MpmOtm
   {
     std::vector<FixedComponents<dim>> result;
     for (const auto &condition : conditions)
-      if (!condition.on_box)
-        for (const auto id : condition.boundary_ids)
-          {
-            if (condition.type == Type::fixed)
-              result.push_back(FixedComponents<dim>::all(id));
-            else if (condition.type == Type::slip)
-              for (unsigned int d = 0; d < dim; ++d)
-                if (std::abs(std::abs(condition.normal[d]) - 1.) < 1e-12)
-                  {
-                    FixedComponents<dim> fixed{id, {}};
-                    fixed.fixed.fill(false);
-                    fixed.fixed[d] = true;
-                    result.push_back(fixed);
-                  }
-          }
-    return result;
-  }
-
-
-
-  template <int dim>
-  Tensor<1, dim>
-  BoundaryConditions<dim>::corrected_velocity(const Condition      &condition,
-                                              const Tensor<1, dim> &v,
-                                              const double          time) const
-  {
-    const double normal_velocity = v * condition.normal;
-    switch (condition.type)
-      {
-        case Type::fixed:
-          return Tensor<1, dim>();
-        case Type::slip:
-          return v - normal_velocity * condition.normal;
-        case Type::friction:
-          {
-            if (normal_velocity <= 0.)
-              return v;
-            const Tensor<1, dim> tangential =
-              v - normal_velocity * condition.normal;
-            const double speed = tangential.norm();
-            const double reduction =
-              std::min(condition.friction_coefficient * normal_velocity, speed);
-            return speed > 0. ? tangential * (1. - reduction / speed) :
-                                tangential;
-          }
-        default:
-          {
-            Tensor<1, dim>       result = v;
-            const Tensor<1, dim> prescribed =
-              condition.velocity->vector_value(Point<dim>(), time);
-            for (unsigned int d = 0; d < dim; ++d)
-              if (condition.components[d])
-                result[d] = prescribed[d];
-            return result;
-          }
-      }
-  }
-
-
-
-  template <int dim>
-  void
-  BoundaryConditions<dim>::measure_gaps(
-    const MaterialPoints<dim>    &material_points,
-    const ParticleShapeData<dim> &data,
-    const NodalSystem<dim>       &system)
-  {
-    for (auto &condition : conditions)
-      {
-        if (condition.type != Type::friction)
-          continue;
-        const auto &partitioner = system.lumped_mass.get_partitioner();
-        if (condition.gap.get_partitioner() != partitioner)
-          condition.gap.reinit(partitioner);
-        double *const gap = condition.gap.get_values();
-        std::fill(gap,
-                  gap + partitioner->locally_owned_size() +
-                    partitioner->n_ghost_indices(),
-                  std::numeric_limits<double>::max());
-        typename ParticleShapeData<dim>::Cursor functions(data);
-        for (const auto &particle : material_points.particle_handler())
-          {
-            const auto   point = functions.next();
-            const double half_size =
-              0.5 *
-              std::pow(PropertyLayout<dim>::volume(particle.get_properties()),
-                       1. / dim);
-            const double point_gap =
-              condition.wall_offset -
-              condition.normal * particle.get_location() - half_size;
-            for (unsigned int j = 0; j < point.n; ++j)
-              if (point.values[j] != 0.)
-                gap[point.indices[j]] =
-                  std::min(gap[point.indices[j]], point_gap);
-          }
-        condition.gap.compress(VectorOperation::min);
-      }
-  }
-
-
-
-  template <int dim>
-  std::array<bool, dim>
-  BoundaryConditions<dim>::constrained_components(
-    const Condition &condition) const
-  {
-    std::array<bool, dim> result{};
-    switch (condition.type)
-      {
-        case Type::fixed:
-          result.fill(true);
-          break;
-        case Type::slip:
-          for (unsigned int d = 0; d < dim; ++d)
-            result[d] = std::abs(std::abs(condition.normal[d]) - 1.) < 1e-12;
-          break;
-        case Type::velocity:
-          result = condition.components;
-          break;
-        default:
-          break;
-      }
+      if (!condition->where.on_box)
+        for (const auto &fixed : condition->fixed_components())
+          result.push_back(fixed);
     return result;
   }
 
@@ -610,10 +407,10 @@ namespace MpmOtm
     const double                            dt,
     typename NodalSystem<dim>::Constraints &constraints)
   {
-    // A box of prescribed velocity moves with its displacement.
+    // A box that moves finds its nodes at its new place.
     for (auto &condition : conditions)
-      if (condition.on_box && condition.type == Type::velocity)
-        find_box_functions(condition);
+      if (condition->where.on_box && condition->moves())
+        find_box_functions(condition->where);
     add_prescribed_lines(
       system,
       time + dt,
@@ -659,14 +456,13 @@ namespace MpmOtm
     for (const auto &condition : conditions)
       {
         const std::array<bool, dim> components =
-          constrained_components(condition);
+          condition->constrained_components();
         if (std::none_of(components.begin(), components.end(), [](bool b) {
               return b;
             }))
           continue;
-        const Tensor<1, dim> target =
-          corrected_velocity(condition, Tensor<1, dim>(), time);
-        for (const unsigned int i : condition.functions)
+        const Tensor<1, dim> target = condition->target_velocity(time);
+        for (const unsigned int i : condition->where.functions)
           {
             if (!(system.lumped_mass.local_element(i) > 0.))
               continue;
@@ -687,9 +483,10 @@ namespace MpmOtm
 
   template <int dim>
   void
-  BoundaryConditions<dim>::constrain_accelerations(
+  BoundaryConditions<dim>::correct_accelerations(
     NodalSystem<dim>             &system,
     const MassMatrix<dim>        &mass_matrix,
+    const MaterialPoints<dim>    &material_points,
     const ParticleShapeData<dim> &shape_data,
     const double                  time,
     const double                  dt)
@@ -697,43 +494,9 @@ namespace MpmOtm
     if (conditions.empty())
       return;
     for (auto &condition : conditions)
-      {
-        condition.in_contact.assign(condition.functions.size(), false);
-        if (condition.type != Type::friction && condition.type != Type::slip)
-          continue;
-        const std::array<bool, dim> components =
-          constrained_components(condition);
-        if (std::any_of(components.begin(), components.end(), [](bool b) {
-              return b;
-            }))
-          continue;
-        for (unsigned int k = 0; k < condition.functions.size(); ++k)
-          {
-            const unsigned int i = condition.functions[k];
-            const double       m = system.lumped_mass.local_element(i);
-            if (!(m > 0.))
-              continue;
-            Tensor<1, dim> v, a;
-            for (unsigned int c = 0; c < dim; ++c)
-              {
-                v[c] = system.momentum[c].local_element(i) / m;
-                a[c] = system.acceleration[c].local_element(i);
-              }
-            if (condition.type == Type::friction)
-              {
-                const double normal_velocity = (v + dt * a) * condition.normal;
-                if (!(normal_velocity > 0. &&
-                      condition.gap.local_element(i) <= dt * normal_velocity))
-                  continue;
-                condition.in_contact[k] = true;
-              }
-            const Tensor<1, dim> corrected =
-              corrected_velocity(condition, v + dt * a, time + dt);
-            for (unsigned int c = 0; c < dim; ++c)
-              system.acceleration[c].local_element(i) =
-                (corrected[c] - v[c]) / dt;
-          }
-      }
+      condition->prepare(material_points, shape_data, system);
+    for (auto &condition : conditions)
+      condition->correct_accelerations(system, time, dt);
     // The reactions once every condition has acted (a node shared by two
     // conditions counts in both).
     for (unsigned int c = 0; c < dim; ++c)
@@ -746,29 +509,18 @@ namespace MpmOtm
                           system.acceleration[c],
                           inertia[c]);
       }
-    for (auto &condition : conditions)
+    for (unsigned int b = 0; b < conditions.size(); ++b)
       {
         Tensor<1, dim> reaction;
-        for (const unsigned int i : condition.functions)
+        for (const unsigned int i : conditions[b]->where.functions)
           for (unsigned int c = 0; c < dim; ++c)
             reaction[c] += inertia[c].local_element(i) -
                            (system.force[c].local_element(i) -
                             system.damping_force[c].local_element(i));
-        condition.reaction_sum += reaction;
-        if (condition.type == Type::velocity)
-          {
-            const Tensor<1, dim> prescribed =
-              condition.velocity->vector_value(Point<dim>(), time + dt);
-            double work = 0.;
-            for (unsigned int d = 0; d < dim; ++d)
-              if (condition.components[d])
-                {
-                  condition.displacement[d] += dt * prescribed[d];
-                  work += dt * reaction[d] * prescribed[d];
-                }
-            work_of_prescribed_velocities += std::max(work, 0.);
-          }
-        ++condition.n_steps;
+        reaction_sums[b] += reaction;
+        work_of_prescribed_velocities +=
+          conditions[b]->advance(reaction, time, dt);
+        ++n_steps[b];
       }
   }
 
@@ -776,36 +528,11 @@ namespace MpmOtm
 
   template <int dim>
   void
-  BoundaryConditions<dim>::constrain_velocities(NodalSystem<dim> &system,
-                                                const double      time) const
+  BoundaryConditions<dim>::correct_velocities(NodalSystem<dim> &system,
+                                              const double      time) const
   {
     for (const auto &condition : conditions)
-      {
-        if (condition.type != Type::friction && condition.type != Type::slip)
-          continue;
-        const std::array<bool, dim> components =
-          constrained_components(condition);
-        if (std::any_of(components.begin(), components.end(), [](bool b) {
-              return b;
-            }))
-          continue;
-        for (unsigned int k = 0; k < condition.functions.size(); ++k)
-          {
-            const unsigned int i = condition.functions[k];
-            if (!(system.lumped_mass.local_element(i) > 0.) ||
-                (condition.type == Type::friction && !condition.in_contact[k]))
-              continue;
-            Tensor<1, dim> v;
-            for (unsigned int c = 0; c < dim; ++c)
-              v[c] = system.velocity[c].local_element(i);
-            const Tensor<1, dim> corrected =
-              condition.type == Type::friction ?
-                v - (v * condition.normal) * condition.normal :
-                corrected_velocity(condition, v, time);
-            for (unsigned int c = 0; c < dim; ++c)
-              system.velocity[c].local_element(i) = corrected[c];
-          }
-      }
+      condition->correct_velocities(system, time);
   }
 
 
@@ -827,7 +554,7 @@ namespace MpmOtm
   {
     std::vector<std::string> result;
     for (const auto &condition : conditions)
-      result.push_back(condition.name);
+      result.push_back(condition->where.name);
     return result;
   }
 
@@ -839,17 +566,16 @@ namespace MpmOtm
     const bool start_new_window)
   {
     std::vector<std::pair<Tensor<1, dim>, Tensor<1, dim>>> result;
-    for (auto &condition : conditions)
+    for (unsigned int b = 0; b < conditions.size(); ++b)
       {
         const Tensor<1, dim> sum =
-          Utilities::MPI::sum(condition.reaction_sum, communicator);
-        result.emplace_back(condition.n_steps > 0 ? sum / condition.n_steps :
-                                                    sum,
-                            condition.displacement);
+          Utilities::MPI::sum(reaction_sums[b], communicator);
+        result.emplace_back(n_steps[b] > 0 ? sum / n_steps[b] : sum,
+                            conditions[b]->where.displacement);
         if (start_new_window)
           {
-            condition.reaction_sum = Tensor<1, dim>();
-            condition.n_steps      = 0;
+            reaction_sums[b] = Tensor<1, dim>();
+            n_steps[b]       = 0;
           }
       }
     return result;
@@ -865,13 +591,13 @@ namespace MpmOtm
     // displacement; own: per condition this rank's reaction sum, then the
     // work not yet taken.
     std::vector<double> shared, own;
-    for (const auto &condition : conditions)
+    for (unsigned int b = 0; b < conditions.size(); ++b)
       {
-        shared.push_back(condition.n_steps);
+        shared.push_back(n_steps[b]);
         for (unsigned int d = 0; d < dim; ++d)
           {
-            shared.push_back(condition.displacement[d]);
-            own.push_back(condition.reaction_sum[d]);
+            shared.push_back(conditions[b]->where.displacement[d]);
+            own.push_back(reaction_sums[b][d]);
           }
       }
     own.push_back(work_of_prescribed_velocities);
@@ -895,12 +621,12 @@ namespace MpmOtm
                            "those of this run (Boundaries)."));
     for (unsigned int b = 0; b < conditions.size(); ++b)
       {
-        conditions[b].n_steps =
-          static_cast<unsigned int>(shared[b * (dim + 1)]);
+        n_steps[b] = static_cast<unsigned int>(shared[b * (dim + 1)]);
         for (unsigned int d = 0; d < dim; ++d)
           {
-            conditions[b].displacement[d] = shared[b * (dim + 1) + 1 + d];
-            conditions[b].reaction_sum[d] = own[b * dim + d];
+            conditions[b]->where.displacement[d] =
+              shared[b * (dim + 1) + 1 + d];
+            reaction_sums[b][d] = own[b * dim + d];
           }
       }
     work_of_prescribed_velocities = own.back();

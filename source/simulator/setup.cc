@@ -98,7 +98,7 @@ namespace MpmOtm
     shape_functions->initialize(*grid);
     shape_function_timer.stop();
     boundary_conditions->setup(*shape_functions, *grid);
-    boundary_conditions->check_travel_into_grid(end_time);
+    boundary_conditions->check_run(end_time);
     auto fixed_components = problem_description->fixed_components();
     {
       const auto grid_ids = grid->boundary_ids();
