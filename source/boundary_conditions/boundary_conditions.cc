@@ -157,6 +157,39 @@ namespace MpmOtm
 
 
   template <int dim>
+  void
+  BoundaryConditions<dim>::check_method(const std::string &method_name,
+                                        const bool         fixed_grid,
+                                        const bool computes_accelerations)
+  {
+    AssertThrow(conditions.empty() || computes_accelerations,
+                ExcMessage("Boundaries: Method = " + method_name +
+                           " updates the nodal velocities in one solve "
+                           "from the momenta and forces, without the nodal "
+                           "accelerations from which the named conditions' "
+                           "corrections and reactions come. Use Method = "
+                           "Unified or MPM, or fix components with the "
+                           "problem's own entries (Custom problem/Fixed "
+                           "components)."));
+    for (auto &condition : conditions)
+      {
+        ConditionNodes<dim> &where = condition->where;
+        AssertThrow(fixed_grid || !where.on_box,
+                    ExcMessage(where.path() +
+                               "Box lower corner, Box upper corner: a "
+                               "condition on the nodes in a box needs the "
+                               "fixed grid of Method = MPM; Method = " +
+                               method_name +
+                               " moves the grid's nodes with the material, "
+                               "so give Boundary ids (a side of the grid) "
+                               "instead."));
+        where.fixed_grid = fixed_grid;
+      }
+  }
+
+
+
+  template <int dim>
   bool
   BoundaryConditions<dim>::empty() const
   {

@@ -59,7 +59,7 @@ namespace MpmOtm
   VelocityCondition<dim>::check_run(const double end_time) const
   {
     const ConditionNodes<dim> &where = this->where;
-    if (where.on_box || where.normal.norm() == 0.)
+    if (where.on_box || !where.fixed_grid || where.normal.norm() == 0.)
       return;
     // The displacement of the prescribed components against the outward
     // normal, by the trapezoidal rule, and its largest value in the run.

@@ -327,12 +327,10 @@ namespace MpmOtm
     checkpoint->parse_parameters(prm);
     boundary_conditions = std::make_unique<BoundaryConditions<dim>>();
     boundary_conditions->parse_parameters(prm);
-    AssertThrow(boundary_conditions->empty() || method->fixed_grid(),
-                ExcMessage("Boundaries: the boundary conditions of the entry "
-                           "'Boundaries' act on the nodes of a fixed grid and "
-                           "need Method = MPM; OTM and Unified move the grid "
-                           "with the material (use the problem's fixed "
-                           "components there)."));
+    boundary_conditions->check_method(
+      prm.get("Method"),
+      method->fixed_grid(),
+      nodal_update->needs_nodal_accelerations());
     damping = std::make_unique<LocalDamping<dim>>();
     damping->parse_parameters(prm);
     quasi_static_end = std::make_unique<QuasiStaticEnd<dim>>();

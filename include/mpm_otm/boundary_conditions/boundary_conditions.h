@@ -37,8 +37,9 @@ namespace MpmOtm
    * functions of some boundary ids of the grid, or those of the grid
    * vertices inside a box), read and found on the grid here, and what it
    * does, a Condition plugin chosen by the entry "Type". The conditions act
-   * on the nodal (coefficient) velocities of a fixed grid, v_new = v + dt a
-   * at the end of the step with v = q / m. The time step calls four phases,
+   * on the nodal (coefficient) velocities, v_new = v + dt a at the end of
+   * the step with v = q / m, of MPM's fixed grid or of the unified
+   * approach's moving grid (check_method()). The time step calls four phases,
    * each of which runs every condition in the order of "Boundaries":
    *
    * - make_acceleration_constraints(): the components the conditions fix
@@ -79,6 +80,19 @@ namespace MpmOtm
      */
     void
     parse_parameters(ParameterHandler &prm);
+
+    /**
+     * Stop if the conditions cannot act with the method @p method_name
+     * (named in the messages): every condition needs the nodal
+     * accelerations of the step (@p computes_accelerations; OTM's position
+     * update has none), and a condition on a box of nodes a @p fixed_grid.
+     * On a moving grid (the unified approach) the conditions on Boundary ids
+     * act on the nodes of their sides, which move with the material.
+     */
+    void
+    check_method(const std::string &method_name,
+                 const bool         fixed_grid,
+                 const bool         computes_accelerations);
 
     /**
      * Whether no condition is given.

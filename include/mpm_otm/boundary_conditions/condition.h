@@ -51,6 +51,11 @@ namespace MpmOtm
     std::vector<unsigned int> functions;
     /// The displacement of the nodes since the start (a box follows it).
     Tensor<1, dim> displacement;
+    /// Whether the grid stays where it is (MPM). On a moving grid (the
+    /// unified approach) a side's nodes move with the material: a velocity
+    /// condition moves its side with them, and the plane of a slip or
+    /// friction condition stays where the side was at the start.
+    bool fixed_grid = true;
 
     /**
      * "Boundary <name>/", to begin the messages about its entries.

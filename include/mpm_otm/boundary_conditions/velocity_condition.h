@@ -36,7 +36,8 @@ namespace MpmOtm
      * hold less and less of it, and the condition's reaction stops being the
      * load on the material (a platen on the grid's top side lost the
      * specimen of the biaxial test after 0.04 m of travel on 0.05 m cells).
-     * A condition on a box follows its displacement.
+     * A condition on a box follows its displacement; on a moving grid the
+     * side moves with its nodes.
      */
     void
     check_run(const double end_time) const override;
