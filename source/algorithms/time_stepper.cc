@@ -63,6 +63,7 @@ namespace MpmOtm
       system.finish_assembly();
       if (damping.is_active(time))
         damping.apply(system);
+      boundary_conditions.add_loads(system, time, dt);
       mass_matrix.assemble(system, data);
     }
     if (nodal_update.needs_nodal_accelerations())

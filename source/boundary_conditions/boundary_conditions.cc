@@ -151,6 +151,7 @@ namespace MpmOtm
         types.push_back(type);
       }
     reaction_sums.assign(conditions.size(), Tensor<1, dim>());
+    loads.assign(conditions.size(), Tensor<1, dim>());
     n_steps.assign(conditions.size(), 0);
   }
 
@@ -239,6 +240,7 @@ namespace MpmOtm
         where.displacement = Tensor<1, dim>();
         reaction_sums[b]   = Tensor<1, dim>();
         n_steps[b]         = 0;
+        conditions[b]->initialize(shape_functions);
       }
   }
 
@@ -434,6 +436,18 @@ namespace MpmOtm
 
   template <int dim>
   void
+  BoundaryConditions<dim>::add_loads(NodalSystem<dim> &system,
+                                     const double      time,
+                                     const double      dt)
+  {
+    for (unsigned int b = 0; b < conditions.size(); ++b)
+      loads[b] = conditions[b]->add_loads(system, time, dt);
+  }
+
+
+
+  template <int dim>
+  void
   BoundaryConditions<dim>::make_acceleration_constraints(
     const NodalSystem<dim>                 &system,
     const double                            time,
@@ -550,6 +564,7 @@ namespace MpmOtm
             reaction[c] += inertia[c].local_element(i) -
                            (system.force[c].local_element(i) -
                             system.damping_force[c].local_element(i));
+        reaction += loads[b];
         reaction_sums[b] += reaction;
         work_of_prescribed_velocities +=
           conditions[b]->advance(reaction, time, dt);

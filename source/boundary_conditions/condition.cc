@@ -13,6 +13,22 @@ namespace MpmOtm
 
   template <int dim>
   void
+  Condition<dim>::initialize(const ShapeFunctions<dim> &)
+  {}
+
+
+
+  template <int dim>
+  Tensor<1, dim>
+  Condition<dim>::add_loads(NodalSystem<dim> &, const double, const double)
+  {
+    return Tensor<1, dim>();
+  }
+
+
+
+  template <int dim>
+  void
   Condition<dim>::check_run(const double) const
   {}
 

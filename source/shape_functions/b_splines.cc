@@ -600,6 +600,35 @@ namespace MpmOtm
 
 
   template <int dim>
+  bool
+  BSplines<dim>::boundary_integrals(const types::boundary_id boundary_id,
+                                    VectorType              &integrals) const
+  {
+    const unsigned int direction = boundary_id / 2;
+    AssertThrow(direction < dim, ExcInternalError());
+    const auto knot = [&](const unsigned int d, const unsigned int k) {
+      const unsigned int last = knots[d].size() - 1;
+      return knots[d][std::min(k < p ? 0u : k - p, last)];
+    };
+    const unsigned int layer =
+      (boundary_id % 2 == 0) ? 0 : n_functions_in_direction(direction) - 1;
+    for (const auto global : locally_owned_functions())
+      {
+        const auto i = multi_index(global);
+        if (i[direction] != layer)
+          continue;
+        double integral = 1.;
+        for (unsigned int d = 0; d < dim; ++d)
+          if (d != direction)
+            integral *= (knot(d, i[d] + p + 1) - knot(d, i[d])) / (p + 1);
+        integrals[global] += integral;
+      }
+    return true;
+  }
+
+
+
+  template <int dim>
   Point<dim>
   BSplines<dim>::greville_point(const types::global_dof_index global) const
   {

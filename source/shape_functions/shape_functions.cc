@@ -65,6 +65,46 @@ namespace MpmOtm
 
 
 
+  template <int dim>
+  bool
+  ShapeFunctions<dim>::boundary_integrals(const types::boundary_id boundary_id,
+                                          VectorType &integrals) const
+  {
+    // The first locally owned cell tells whether the functions belong to
+    // vertices; a rank without cells asks the others.
+    const auto  &triangulation        = dof_handler().get_triangulation();
+    unsigned int has_vertex_functions = 1;
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          has_vertex_functions =
+            (vertex_function(cell, 0) != numbers::invalid_dof_index);
+          break;
+        }
+    if (Utilities::MPI::min(has_vertex_functions,
+                            triangulation.get_communicator()) == 0)
+      return false;
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const unsigned int f : cell->face_indices())
+          if (cell->face(f)->at_boundary() &&
+              cell->face(f)->boundary_id() == boundary_id)
+            {
+              const auto face  = cell->face(f);
+              double     share = 1.;
+              if constexpr (dim > 1)
+                share = face->measure() / face->n_vertices();
+              for (const unsigned int w : face->vertex_indices())
+                for (const unsigned int v : cell->vertex_indices())
+                  if (cell->vertex_index(v) == face->vertex_index(w))
+                    integrals[vertex_function(cell, v)] += share;
+            }
+    integrals.compress(VectorOperation::add);
+    return true;
+  }
+
+
+
   template class ShapeFunctions<1>;
   template class ShapeFunctions<2>;
   template class ShapeFunctions<3>;

@@ -39,9 +39,11 @@ namespace MpmOtm
    * does, a Condition plugin chosen by the entry "Type". The conditions act
    * on the nodal (coefficient) velocities, v_new = v + dt a at the end of
    * the step with v = q / m, of MPM's fixed grid or of the unified
-   * approach's moving grid (check_method()). The time step calls four phases,
+   * approach's moving grid (check_method()). The time step calls five phases,
    * each of which runs every condition in the order of "Boundaries":
    *
+   * - add_loads(): the conditions' forces on the nodes (an absorbing side's
+   *   dashpots), in particle-to-grid;
    * - make_acceleration_constraints(): the components the conditions fix
    *   enter the solve for the accelerations as inhomogeneous affine
    *   constraints a_i = (v_target - v_i) / dt;
@@ -54,9 +56,11 @@ namespace MpmOtm
    * - correct_velocities(): the corrections of the solved velocities.
    *
    * The reaction of a condition is the sum of (M a - f)_i over its nodes,
-   * with the mass matrix M of the solves: the force the boundary exerts on
-   * the material, which the free nodes' equations M a = f leave over at
-   * the constrained ones. f there is without the local damping's force
+   * with the mass matrix M of the solves, plus the loads it added itself:
+   * the force the boundary exerts on the material, which the free nodes'
+   * equations M a = f leave over at the constrained ones, and its own
+   * loads at nodes it does not constrain. f there is without the local
+   * damping's force
    * (NodalSystem::damping_force), a numerical force that the boundary does
    * not exert: with it, a coefficient alpha changed the reaction of a
    * loading platen by up to alpha times itself. Conditions that fix whole
@@ -121,6 +125,13 @@ namespace MpmOtm
      */
     void
     check_run(const double end_time) const;
+
+    /**
+     * Add the conditions' loads to the assembled nodal forces of the step
+     * from @p time to @p time + @p dt (Condition::add_loads()). Collective.
+     */
+    void
+    add_loads(NodalSystem<dim> &system, const double time, const double dt);
 
     /**
      * Set @p constraints to the system's NodalSystem::constraints() and add
@@ -256,6 +267,8 @@ namespace MpmOtm
     std::vector<std::string> types;
     /// Per condition, this rank's reactions summed since the last output.
     std::vector<Tensor<1, dim>> reaction_sums;
+    /// Per condition, the loads it added on this rank in the current step.
+    std::vector<Tensor<1, dim>> loads;
     /// Per condition, the number of steps summed.
     std::vector<unsigned int> n_steps;
     /// M a, per component, for the reactions.

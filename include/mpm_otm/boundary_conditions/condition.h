@@ -22,6 +22,8 @@ namespace MpmOtm
   template <int dim>
   class NodalSystem;
   template <int dim>
+  class ShapeFunctions;
+  template <int dim>
   struct ParticleShapeData;
 
   /**
@@ -77,6 +79,7 @@ namespace MpmOtm
    * MPM_OTM_REGISTER_PLUGIN, declares and reads its own entries, and
    * implements what it needs of the phases of a step:
    *
+   * - loads: forces added to the nodes in particle-to-grid (add_loads());
    * - constraints: the components it fixes by an affine constraint and their
    *   target velocity, which the manager adds as a_i = (v_target - v_i) / dt
    *   to the solve for the accelerations and as v_i = v_target to the solves
@@ -111,6 +114,23 @@ namespace MpmOtm
      */
     virtual bool
     needs_normal() const;
+
+    /**
+     * Take what the condition needs of the family @p shape_functions, once
+     * its nodes are known (nodes()).
+     */
+    virtual void
+    initialize(const ShapeFunctions<dim> &shape_functions);
+
+    /**
+     * Add the condition's loads to the nodal forces (locally owned entries
+     * of system.force, assembled from the points) for the step from
+     * @p time to @p time + @p dt, before the solve. Returns their sum on
+     * this rank, which is part of the condition's reaction. Collective
+     * where it reduces.
+     */
+    virtual Tensor<1, dim>
+    add_loads(NodalSystem<dim> &system, const double time, const double dt);
 
     /**
      * Stop before the first step if the condition cannot hold until

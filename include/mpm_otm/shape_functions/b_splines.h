@@ -124,6 +124,17 @@ namespace MpmOtm
       std::vector<types::global_dof_index> &functions) const override;
 
     /**
+     * The integrals over a side of the box grid (boundary id 2 d or 2 d + 1
+     * for direction d): only the functions of the first or last layer in
+     * direction d do not vanish there, and each is the product of the
+     * integrals of its 1D functions along the side, (U_{i+p+1} - U_i) /
+     * (p + 1) on the open knot vector U.
+     */
+    bool
+    boundary_integrals(const types::boundary_id boundary_id,
+                       VectorType              &integrals) const override;
+
+    /**
      * The Greville points of the relevant functions: the coefficients of
      * the field x (B-splines reproduce linear fields).
      */

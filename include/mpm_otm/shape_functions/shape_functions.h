@@ -274,6 +274,21 @@ namespace MpmOtm
                     std::vector<Point<dim>>           &points) const;
 
     /**
+     * Add to @p integrals (a vector with the system's partitioner) the
+     * integral of each function over the grid's faces with boundary id
+     * @p boundary_id, on the grid as it is now: a node's share of a side,
+     * for loads on the side. By default each face gives its vertices'
+     * functions (vertex_function()) the same share, its measure over its
+     * number of vertices, exact for linear functions on straight faces
+     * (max-ent's functions on the side are close to these). Returns false,
+     * on every rank, if the family's functions do not belong to vertices
+     * and it does not override this. Collective.
+     */
+    virtual bool
+    boundary_integrals(const types::boundary_id boundary_id,
+                       VectorType              &integrals) const;
+
+    /**
      * The DoFHandler of the finite element the cells carry.
      */
     virtual const DoFHandler<dim> &
