@@ -60,6 +60,15 @@ namespace MpmOtm
 
 
   template <int dim>
+  bool
+  AbsorbingCondition<dim>::needs_lumped_mass() const
+  {
+    return true;
+  }
+
+
+
+  template <int dim>
   void
   AbsorbingCondition<dim>::initialize(
     const ShapeFunctions<dim> &shape_functions)
@@ -103,7 +112,6 @@ namespace MpmOtm
       find_shares();
     const Tensor<1, dim> &normal = where.normal;
     Tensor<1, dim>        load;
-    double                power = 0.;
     for (const unsigned int i : where.functions)
       {
         const double m = system.lumped_mass.local_element(i);
@@ -127,9 +135,7 @@ namespace MpmOtm
         for (unsigned int c = 0; c < dim; ++c)
           system.force[c].local_element(i) += force[c];
         load += force;
-        power += force * (normal_velocity * normal + tangential_velocity);
       }
-    system.add_external_power(power);
     return load;
   }
 

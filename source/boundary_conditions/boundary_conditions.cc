@@ -161,7 +161,8 @@ namespace MpmOtm
   void
   BoundaryConditions<dim>::check_method(const std::string &method_name,
                                         const bool         fixed_grid,
-                                        const bool computes_accelerations)
+                                        const bool computes_accelerations,
+                                        const bool lumped_mass)
   {
     AssertThrow(conditions.empty() || computes_accelerations,
                 ExcMessage("Boundaries: Method = " + method_name +
@@ -184,6 +185,15 @@ namespace MpmOtm
                                " moves the grid's nodes with the material, "
                                "so give Boundary ids (a side of the grid) "
                                "instead."));
+        AssertThrow(lumped_mass || !condition->needs_lumped_mass(),
+                    ExcMessage(where.path() +
+                               "Type = " + types[&condition - &conditions[0]] +
+                               " acts on each node with its own (lumped) "
+                               "mass, which the solve with a consistent or "
+                               "partially lumped Mass matrix would spread "
+                               "over the neighbouring nodes, so that its "
+                               "force could overshoot. Use Mass matrix = "
+                               "lumped."));
         where.fixed_grid = fixed_grid;
       }
   }
@@ -231,7 +241,7 @@ namespace MpmOtm
               for (const auto function : shape_functions.boundary_functions(id))
                 if (owned.is_element(function))
                   where.functions.push_back(owned.index_within_set(function));
-            find_normal(where, conditions[b]->needs_normal());
+            find_normal(where, conditions[b]->needs_normal(), types[b]);
           }
         std::sort(where.functions.begin(), where.functions.end());
         where.functions.erase(std::unique(where.functions.begin(),
@@ -249,7 +259,8 @@ namespace MpmOtm
   template <int dim>
   void
   BoundaryConditions<dim>::find_normal(ConditionNodes<dim> &where,
-                                       const bool           needs_normal) const
+                                       const bool           needs_normal,
+                                       const std::string   &type) const
   {
     const BackgroundGrid<dim> &grid          = *background_grid;
     const auto                &triangulation = grid.triangulation();
@@ -324,11 +335,11 @@ namespace MpmOtm
     where.wall_offset = Utilities::MPI::sum(offset, communicator) / n_faces;
     where.cell_depth  = Utilities::MPI::min(cell_depth, communicator);
     AssertThrow(deviation < 1e-8 || !needs_normal,
-                ExcMessage(path + "Type = slip and friction need a "
-                                  "planar boundary, but the faces "
-                                  "of these Boundary ids have "
-                                  "different normals; give each "
-                                  "planar part its own id."));
+                ExcMessage(path + "Type = " + type +
+                           " needs a planar boundary, but the faces "
+                           "of these Boundary ids have "
+                           "different normals; give each "
+                           "planar part its own id."));
   }
 
 

@@ -12,6 +12,15 @@ namespace MpmOtm
 
 
   template <int dim>
+  bool
+  Condition<dim>::needs_lumped_mass() const
+  {
+    return false;
+  }
+
+
+
+  template <int dim>
   void
   Condition<dim>::initialize(const ShapeFunctions<dim> &)
   {}

@@ -327,10 +327,10 @@ namespace MpmOtm
     checkpoint->parse_parameters(prm);
     boundary_conditions = std::make_unique<BoundaryConditions<dim>>();
     boundary_conditions->parse_parameters(prm);
-    boundary_conditions->check_method(
-      prm.get("Method"),
-      method->fixed_grid(),
-      nodal_update->needs_nodal_accelerations());
+    boundary_conditions->check_method(prm.get("Method"),
+                                      method->fixed_grid(),
+                                      nodal_update->needs_nodal_accelerations(),
+                                      mass_matrix->is_lumped());
     damping = std::make_unique<LocalDamping<dim>>();
     damping->parse_parameters(prm);
     quasi_static_end = std::make_unique<QuasiStaticEnd<dim>>();

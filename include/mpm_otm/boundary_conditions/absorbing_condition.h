@@ -14,14 +14,16 @@ namespace MpmOtm
    * along the side, which absorb a plane wave at normal incidence
    * completely. Each node of the side gets the force of its share A_i of
    * the side, the integral of its function over the side's faces
-   * (ShapeFunctions::boundary_integrals(); on a moving grid recomputed in
-   * every step). The dashpots act on the velocity at the end of the step
-   * (backward Euler), with the lumped mass m_i: per direction
+   * (ShapeFunctions::boundary_integrals(), which a family without them
+   * refuses before the first step; on a moving grid recomputed in every
+   * step). The dashpots act on the velocity at the end of the step
+   * (backward Euler) with the lumped mass m_i, per direction
    * v_new = (q_i + dt f_i) / (m_i + dt A_i rho c), so that no time step
-   * and no nearly empty node makes them overshoot, and the force
-   * -A_i rho c v_new is added to the node's force before the solve. The
-   * work of the force (negative: the energy that leaves) enters the energy
-   * balance, and the force is the condition's reaction.
+   * and no nearly empty node makes them overshoot; the force
+   * -A_i rho c v_new is added to the node's force before the solve, which
+   * must use the lumped mass too. The force is the condition's reaction;
+   * the energy it takes out of the model is not counted as work (the
+   * energy monitor's bound stays valid).
    */
   template <int dim>
   class AbsorbingCondition : public Condition<dim>
@@ -38,6 +40,9 @@ namespace MpmOtm
 
     bool
     needs_normal() const override;
+
+    bool
+    needs_lumped_mass() const override;
 
     void
     initialize(const ShapeFunctions<dim> &shape_functions) override;

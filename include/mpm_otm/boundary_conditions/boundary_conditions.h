@@ -89,14 +89,16 @@ namespace MpmOtm
      * Stop if the conditions cannot act with the method @p method_name
      * (named in the messages): every condition needs the nodal
      * accelerations of the step (@p computes_accelerations; OTM's position
-     * update has none), and a condition on a box of nodes a @p fixed_grid.
+     * update has none), a condition on a box of nodes a @p fixed_grid, and
+     * some (Condition::needs_lumped_mass()) a @p lumped_mass matrix.
      * On a moving grid (the unified approach) the conditions on Boundary ids
      * act on the nodes of their sides, which move with the material.
      */
     void
     check_method(const std::string &method_name,
                  const bool         fixed_grid,
-                 const bool         computes_accelerations);
+                 const bool         computes_accelerations,
+                 const bool         lumped_mass);
 
     /**
      * Whether no condition is given.
@@ -239,7 +241,9 @@ namespace MpmOtm
      * depth of the cells along them. Collective.
      */
     void
-    find_normal(ConditionNodes<dim> &where, const bool needs_normal) const;
+    find_normal(ConditionNodes<dim> &where,
+                const bool           needs_normal,
+                const std::string   &type) const;
 
     /**
      * Set @p constraints to the system's NodalSystem::constraints() and add

@@ -72,7 +72,7 @@ namespace MpmOtm
 
 
   /**
-   * One type of condition on the nodal velocities of a fixed grid, a plugin
+   * One type of condition on the nodal velocities of the grid, a plugin
    * of the nodal pipeline that BoundaryConditions runs (Bardenhagen,
    * Brackbill & Sulsky 2000; Bardenhagen et al. 2001). Each type registers
    * its name (the entry "Type" of a subsection "Boundary <name>") with
@@ -114,6 +114,13 @@ namespace MpmOtm
      */
     virtual bool
     needs_normal() const;
+
+    /**
+     * Whether the condition needs a lumped mass matrix (it acts on each
+     * node with its own mass).
+     */
+    virtual bool
+    needs_lumped_mass() const;
 
     /**
      * Take what the condition needs of the family @p shape_functions, once

@@ -279,8 +279,9 @@ namespace MpmOtm
      * @p boundary_id, on the grid as it is now: a node's share of a side,
      * for loads on the side. By default each face gives its vertices'
      * functions (vertex_function()) the same share, its measure over its
-     * number of vertices, exact for linear functions on straight faces
-     * (max-ent's functions on the side are close to these). Returns false,
+     * number of vertices: exact for linear functions on segments, triangles
+     * and parallelograms, close on other quadrilaterals (a moving grid's)
+     * and for max-ent's functions on the side. Returns false,
      * on every rank, if the family's functions do not belong to vertices
      * and it does not override this. Collective.
      */
