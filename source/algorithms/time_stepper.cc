@@ -61,9 +61,9 @@ namespace MpmOtm
       particle_transfer.add_affine_momentum(material_points, data, system);
       grid_motion.add_face_tractions(problem, time, system);
       system.finish_assembly();
+      boundary_conditions.add_loads(system, time, dt);
       if (damping.is_active(time))
         damping.apply(system);
-      boundary_conditions.add_loads(system, time, dt);
       mass_matrix.assemble(system, data);
     }
     if (nodal_update.needs_nodal_accelerations())

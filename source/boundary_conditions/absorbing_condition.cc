@@ -69,6 +69,15 @@ namespace MpmOtm
 
 
   template <int dim>
+  bool
+  AbsorbingCondition<dim>::holds_nodes() const
+  {
+    return false;
+  }
+
+
+
+  template <int dim>
   void
   AbsorbingCondition<dim>::initialize(
     const ShapeFunctions<dim> &shape_functions)

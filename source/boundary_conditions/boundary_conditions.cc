@@ -570,11 +570,12 @@ namespace MpmOtm
     for (unsigned int b = 0; b < conditions.size(); ++b)
       {
         Tensor<1, dim> reaction;
-        for (const unsigned int i : conditions[b]->where.functions)
-          for (unsigned int c = 0; c < dim; ++c)
-            reaction[c] += inertia[c].local_element(i) -
-                           (system.force[c].local_element(i) -
-                            system.damping_force[c].local_element(i));
+        if (conditions[b]->holds_nodes())
+          for (const unsigned int i : conditions[b]->where.functions)
+            for (unsigned int c = 0; c < dim; ++c)
+              reaction[c] += inertia[c].local_element(i) -
+                             (system.force[c].local_element(i) -
+                              system.damping_force[c].local_element(i));
         reaction += loads[b];
         reaction_sums[b] += reaction;
         work_of_prescribed_velocities +=

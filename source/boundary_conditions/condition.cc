@@ -13,6 +13,15 @@ namespace MpmOtm
 
   template <int dim>
   bool
+  Condition<dim>::holds_nodes() const
+  {
+    return true;
+  }
+
+
+
+  template <int dim>
+  bool
   Condition<dim>::needs_lumped_mass() const
   {
     return false;

@@ -44,6 +44,12 @@ namespace MpmOtm
     bool
     needs_lumped_mass() const override;
 
+    /**
+     * False: its reaction is its load.
+     */
+    bool
+    holds_nodes() const override;
+
     void
     initialize(const ShapeFunctions<dim> &shape_functions) override;
 

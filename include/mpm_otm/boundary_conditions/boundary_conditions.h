@@ -55,17 +55,16 @@ namespace MpmOtm
    *   prescribed ones in every solve;
    * - correct_velocities(): the corrections of the solved velocities.
    *
-   * The reaction of a condition is the sum of (M a - f)_i over its nodes,
-   * with the mass matrix M of the solves, plus the loads it added itself:
-   * the force the boundary exerts on the material, which the free nodes'
-   * equations M a = f leave over at the constrained ones, and its own
-   * loads at nodes it does not constrain. f there is without the local
-   * damping's force
-   * (NodalSystem::damping_force), a numerical force that the boundary does
-   * not exert: with it, a coefficient alpha changed the reaction of a
-   * loading platen by up to alpha times itself. Conditions that fix whole
-   * components on sides normal to a coordinate direction also constrain
-   * them to zero in the velocity solves (fixed_components()), as the
+   * The reaction of a condition that holds its nodes is the sum of
+   * (M a - f)_i over them, with the mass matrix M of the solves: the force
+   * the boundary exerts on the material, which the free nodes' equations
+   * M a = f leave over at the constrained ones; that of a condition that
+   * only adds loads (Condition::holds_nodes()) is its loads. f there is without
+   * the local damping's force (NodalSystem::damping_force), a numerical force
+   * that the boundary does not exert: with it, a coefficient alpha changed the
+   * reaction of a loading platen by up to alpha times itself. Conditions that
+   * fix whole components on sides normal to a coordinate direction also
+   * constrain them to zero in the velocity solves (fixed_components()), as the
    * problems' own FixedComponents do.
    */
   template <int dim>

@@ -116,6 +116,15 @@ namespace MpmOtm
     needs_normal() const;
 
     /**
+     * Whether the condition holds its nodes (fixes components or corrects
+     * the solved values), so that what the equations of motion leave over
+     * there, (M a - f)_i, is part of its reaction. A condition that only
+     * adds loads has them as its reaction.
+     */
+    virtual bool
+    holds_nodes() const;
+
+    /**
      * Whether the condition needs a lumped mass matrix (it acts on each
      * node with its own mass).
      */
