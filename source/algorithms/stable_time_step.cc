@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 
 namespace MpmOtm
 {
@@ -172,15 +173,43 @@ namespace MpmOtm
         mass_matrix.solve(system, data, right_hand_side, solution, constraints);
     };
 
+    // The start vector r_i = sum_p phi_i(x_p) w_p, with a number w_p in
+    // [-1, 1) that depends on the point's initial position only (rounded to
+    // single precision): every partition starts from the same vector to
+    // round-off, so that an estimate that has not converged is the same on
+    // every number of ranks. (The global function numbers depend on the
+    // partition.)
     std::array<VectorType, dim> q, q_old, p, p_old, r;
     for (unsigned int c = 0; c < dim; ++c)
-      {
-        for (auto *vector : {&q[c], &q_old[c], &p[c], &p_old[c], &r[c]})
-          vector->reinit(system.lumped_mass);
-        for (unsigned int i = 0; i < r[c].locally_owned_size(); ++i)
-          r[c].local_element(i) =
-            pseudo_random(dim * system.partitioner().local_to_global(i) + c);
-      }
+      for (auto *vector : {&q[c], &q_old[c], &p[c], &p_old[c], &r[c]})
+        vector->reinit(system.lumped_mass);
+    {
+      using Layout = PropertyLayout<dim>;
+      typename ParticleShapeData<dim>::Cursor functions(data);
+      for (const auto &particle : material_points.particle_handler())
+        {
+          const auto    point = functions.next();
+          const auto    X     = Layout::get_vector(particle.get_properties(),
+                                            Layout::initial_position);
+          std::uint64_t key   = 0;
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              const float   coordinate = static_cast<float>(X[d]);
+              std::uint32_t bits;
+              std::memcpy(&bits, &coordinate, sizeof(bits));
+              key = (key << 21) ^ (key >> 43) ^ bits;
+            }
+          for (unsigned int c = 0; c < dim; ++c)
+            {
+              const double weight = pseudo_random(dim * key + c);
+              for (unsigned int j = 0; j < point.n; ++j)
+                r[c].local_element(point.indices[j]) +=
+                  point.values[j] * weight;
+            }
+        }
+      for (unsigned int c = 0; c < dim; ++c)
+        r[c].compress(VectorOperation::add);
+    }
     std::vector<double> alpha, beta;
     double              eigenvalue = 0;
     Estimate            result;

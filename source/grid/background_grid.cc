@@ -515,6 +515,15 @@ namespace MpmOtm
 
 
   template <int dim>
+  const GmshFile *
+  BackgroundGrid<dim>::gmsh_file() const
+  {
+    return gmsh.get();
+  }
+
+
+
+  template <int dim>
   const BoundingBox<dim> &
   BackgroundGrid<dim>::box() const
   {

@@ -230,7 +230,10 @@ namespace MpmOtm
          {"$PhysicalNames", "$Entities", "$PartitionedEntities"})
       if (token == optional)
         {
-          skip_section(optional);
+          if (optional == "$PhysicalNames")
+            scan_physical_names(in);
+          else
+            skip_section(optional);
           if (!(in >> token))
             fail("ends after " + optional + " (no $Nodes)");
         }
@@ -325,6 +328,41 @@ namespace MpmOtm
            std::to_string(n_nodes) + " nodes)");
     if (n_nodes > 0)
       extent = std::max(upper[0] - lower[0], upper[1] - lower[1]);
+  }
+
+
+
+  void
+  GmshFile::scan_physical_names(std::istream &in)
+  {
+    const auto malformed = [&]() {
+      fail("has a malformed or truncated $PhysicalNames section (expected "
+           "the number of names, then per name its dimension, tag and "
+           "\"name\")");
+    };
+    unsigned long n_names = 0;
+    if (!(in >> n_names))
+      malformed();
+    for (unsigned long i = 0; i < n_names; ++i)
+      {
+        unsigned int group_dimension;
+        long         tag;
+        std::string  rest;
+        if (!(in >> group_dimension >> tag) || !std::getline(in, rest))
+          malformed();
+        const auto first = rest.find('"');
+        const auto last  = rest.rfind('"');
+        if (first == std::string::npos || last == first || tag < 0)
+          malformed();
+        group_names.emplace_back(group_dimension,
+                                 static_cast<types::material_id>(tag),
+                                 rest.substr(first + 1, last - first - 1));
+      }
+    std::string token;
+    if (!(in >> token) || token != "$EndPhysicalNames")
+      fail("has more or fewer names in $PhysicalNames than it announces (no "
+           "$EndPhysicalNames after " +
+           std::to_string(n_names) + " names)");
   }
 
 
@@ -461,6 +499,26 @@ namespace MpmOtm
     const auto entry = elements_of_type.find(
       dimension == 2 ? (is_simplex() ? 2 : 3) : (is_simplex() ? 4 : 5));
     return entry == elements_of_type.end() ? 0 : entry->second;
+  }
+
+
+
+  std::map<types::material_id, std::string>
+  GmshFile::physical_names(const unsigned int group_dimension) const
+  {
+    std::map<types::material_id, std::string> names;
+    for (const auto &[d, tag, name] : group_names)
+      if (d == group_dimension)
+        names[tag] = name;
+    return names;
+  }
+
+
+
+  const std::string &
+  GmshFile::name() const
+  {
+    return filename;
   }
 
 

@@ -114,6 +114,7 @@ namespace MpmOtm
         return "";
       std::vector<std::string> found;
       for (const std::string name : {"statistics.csv",
+                                     "monitoring.csv",
                                      "parameters.prm",
                                      "particles.pvd",
                                      "grid.pvd",
@@ -136,10 +137,12 @@ namespace MpmOtm
                  "newest checkpoint (mpm-otm --resume " +
                  directory + ").";
         }
-      // The step files of the earlier run, which a shorter run would leave
-      // beside its own.
+      // The step files and the monitoring table of the earlier run, which a
+      // shorter run or one without monitoring would leave beside its own.
       std::vector<std::pair<fs::path, long>> files;
       std::string problem = list_step_files(directory, files);
+      if (problem.empty())
+        problem = remove_path(directory + "/monitoring.csv");
       for (unsigned int k = 0; k < files.size() && problem.empty(); ++k)
         problem = remove_path(files[k].first);
       return problem.empty() ? "" : "Output/Overwrite: " + problem;
@@ -180,24 +183,35 @@ namespace MpmOtm
       if (!problem.empty())
         return problem;
 
-      // The header and the rows up to the step.
-      const std::string name = directory + "/statistics.csv";
-      std::ifstream     in(name);
-      if (!in)
-        return "Cannot read <" + name + ">: " + std::strerror(errno) + ".";
-      std::ostringstream kept;
-      std::string        line;
-      bool               header = true;
-      while (std::getline(in, line))
+      // The header and the rows up to the step of each table; a last row
+      // without its end of line was cut off by the interruption.
+      for (const std::string table : {"statistics.csv", "monitoring.csv"})
         {
-          if (header ||
-              std::strtol(line.c_str(), nullptr, 10) <= static_cast<long>(step))
-            kept << line << '\n';
-          header = false;
+          const std::string name = directory + "/" + table;
+          if (table == "monitoring.csv" && !fs::exists(name))
+            continue;
+          std::ifstream in(name);
+          if (!in)
+            return "Cannot read <" + name + ">: " + std::strerror(errno) + ".";
+          std::ostringstream kept;
+          std::string        line;
+          bool               header = true;
+          while (std::getline(in, line))
+            {
+              if (in.eof())
+                break;
+              if (header || std::strtol(line.c_str(), nullptr, 10) <=
+                              static_cast<long>(step))
+                kept << line << '\n';
+              header = false;
+            }
+          problem = write_file_atomically(name, [&](std::ostream &out) {
+            out << kept.str();
+          });
+          if (!problem.empty())
+            return problem;
         }
-      return write_file_atomically(name, [&](std::ostream &out) {
-        out << kept.str();
-      });
+      return "";
     }
   } // namespace OutputDirectory
 } // namespace MpmOtm

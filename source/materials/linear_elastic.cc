@@ -50,6 +50,15 @@ namespace MpmOtm
 
 
 
+  template <int dim>
+  bool
+  LinearElastic<dim>::keeps_initial_stress() const
+  {
+    return false;
+  }
+
+
+
   template class LinearElastic<1>;
   template class LinearElastic<2>;
   template class LinearElastic<3>;

@@ -104,6 +104,15 @@ namespace MpmOtm
 
   template <int dim>
   bool
+  Material<dim>::keeps_initial_stress() const
+  {
+    return true;
+  }
+
+
+
+  template <int dim>
+  bool
   Material<dim>::is_disconnected(const ArrayView<const double> &) const
   {
     return false;

@@ -49,6 +49,15 @@ namespace MpmOtm
 
 
 
+  template <int dim>
+  bool
+  NeoHookean<dim>::keeps_initial_stress() const
+  {
+    return false;
+  }
+
+
+
   template class NeoHookean<1>;
   template class NeoHookean<2>;
   template class NeoHookean<3>;

@@ -1,12 +1,15 @@
 #include <deal.II/base/utilities.h>
 
 #include <mpm_otm/base/read_point.h>
+#include <mpm_otm/grid/background_grid.h>
 #include <mpm_otm/materials/material_library.h>
 #include <mpm_otm/problems/body.h>
+#include <mpm_otm/problems/mesh_groups.h>
 
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <tuple>
 
 namespace MpmOtm
 {
@@ -103,11 +106,14 @@ namespace MpmOtm
     const std::string zeros = (dim == 1 ? "0" : dim == 2 ? "0; 0" : "0; 0; 0");
     prm.declare_entry("Shape",
                       "box",
-                      Patterns::Selection("box|ball|polygon|level set"),
+                      Patterns::Selection(
+                        "box|ball|polygon|level set|mesh group"),
                       "box: between Lower corner and Upper corner; ball: a "
                       "disk (2D) or sphere (3D) of Radius around Centre; "
                       "polygon (2D): inside the closed polygon of Vertices; "
-                      "level set: where the expression Level set is <= 0.");
+                      "level set: where the expression Level set is <= 0; "
+                      "mesh group: the cells of the physical group Group of "
+                      "Mesh/Mesh file.");
     prm.declare_entry("Lower corner",
                       "",
                       Patterns::List(Patterns::Double(), 0, dim),
@@ -136,6 +142,12 @@ namespace MpmOtm
                       "Shape = level set: an expression in the coordinates "
                       "(x, y, z) that is <= 0 inside the body, e.g. "
                       "'(x-1)^2 + (y-1)^2 - 0.25'.");
+    prm.declare_entry("Group",
+                      "",
+                      Patterns::Anything(),
+                      "Shape = mesh group: the name (of $PhysicalNames) or "
+                      "the tag of a physical group of surfaces (2D) or "
+                      "volumes (3D) of Mesh/Mesh file.");
     prm.declare_entry("Material",
                       "default",
                       Patterns::Anything(),
@@ -220,6 +232,20 @@ namespace MpmOtm
         if constexpr (dim == 2)
           check_simple_polygon(polygon, entry("Vertices"));
       }
+    else if (shape_name == "mesh group")
+      {
+        AssertThrow(dim > 1,
+                    ExcMessage(entry("Shape") +
+                               " = mesh group needs a Mesh file, which is "
+                               "2D or 3D."));
+        shape = Shape::mesh_group;
+        group = Utilities::trim(prm.get("Group"));
+        AssertThrow(!group.empty(),
+                    ExcMessage(entry("Group") +
+                               " is empty: Shape = mesh group needs the name "
+                               "or tag of a physical group of Mesh/Mesh "
+                               "file."));
+      }
     else
       {
         shape = Shape::level_set;
@@ -261,6 +287,20 @@ namespace MpmOtm
                                                   entry("Initial stress"));
       }
 
+    const std::string material_subsection = prm.get("Material") == "default" ?
+                                              "Material" :
+                                              "Material " + prm.get("Material");
+    AssertThrow(
+      (!geostatic && !stress) || material_model->keeps_initial_stress(),
+      ExcMessage(entry("Initial stress") + " = " + stress_text +
+                 ": the body's material (subsection " + material_subsection +
+                 ") computes its stress from the deformation gradient alone "
+                 "(Model = linear elastic or neo-Hookean), so it would replace "
+                 "the initial stress by zero in the first step and the body "
+                 "would move as if it had none. Use Model = hypo-elastic (the "
+                 "same elastic constants as a rate, which keeps an initial "
+                 "stress) or a plastic model, or Initial stress = 0."));
+
     lateral_ratio           = -1;
     const std::string ratio = prm.get("Lateral stress ratio");
     if (!ratio.empty())
@@ -280,6 +320,89 @@ namespace MpmOtm
                                "the default."));
         lateral_ratio = value;
       }
+  }
+
+
+
+  template <int dim>
+  void
+  Body<dim>::check_on_grid(const BackgroundGrid<dim> &grid,
+                           const MeshGroups<dim>     *mesh_groups)
+  {
+    if (shape == Shape::mesh_group)
+      {
+        AssertThrow(mesh_groups != nullptr,
+                    ExcMessage(path + "/Shape = mesh group needs the grid "
+                                      "of a Mesh file (Mesh/Mesh file), "
+                                      "whose physical groups name the "
+                                      "cells; the grid is a box."));
+        groups    = mesh_groups;
+        group_tag = groups->tag(group, path + "/Group");
+        return;
+      }
+    if (shape == Shape::level_set)
+      return;
+    // The corners of the body's bounding box.
+    Point<dim> lower, upper;
+    switch (shape)
+      {
+        case Shape::box:
+          std::tie(lower, upper) = box.get_boundary_points();
+          break;
+        case Shape::ball:
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              lower[d] = centre[d] - radius;
+              upper[d] = centre[d] + radius;
+            }
+          break;
+        default:
+          lower = upper = polygon[0];
+          for (const auto &vertex : polygon)
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                lower[d] = std::min(lower[d], vertex[d]);
+                upper[d] = std::max(upper[d], vertex[d]);
+              }
+      }
+    const auto [grid_lower, grid_upper] = grid.box().get_boundary_points();
+    double size                         = 0;
+    for (unsigned int d = 0; d < dim; ++d)
+      size = std::max(size, grid_upper[d] - grid_lower[d]);
+    const double tolerance = 1e-10 * size;
+    for (unsigned int d = 0; d < dim; ++d)
+      if (lower[d] < grid_lower[d] - tolerance ||
+          upper[d] > grid_upper[d] + tolerance)
+        {
+          const auto text = [](const Point<dim> &point) {
+            std::ostringstream coordinates;
+            for (unsigned int e = 0; e < dim; ++e)
+              coordinates << (e > 0 ? ", " : "") << point[e];
+            return coordinates.str();
+          };
+          std::ostringstream message;
+          message << path << ": the body reaches from (" << text(lower)
+                  << ") to (" << text(upper) << "), beyond the grid's "
+                  << (grid.is_box() ?
+                        "box" :
+                        "bounding box (of the vertices of Mesh/Mesh file)")
+                  << " from (" << text(grid_lower) << ") to ("
+                  << text(grid_upper)
+                  << "): its part outside would get no material points. "
+                  << "Keep the body inside the grid, or enlarge the grid "
+                  << (grid.is_box() ? "(Mesh/Lower corner, Upper corner)." :
+                                      "(Mesh/Mesh file).");
+          AssertThrow(false, ExcMessage(message.str()));
+        }
+  }
+
+
+
+  template <int dim>
+  bool
+  Body<dim>::is_mesh_group() const
+  {
+    return shape == Shape::mesh_group;
   }
 
 
@@ -319,6 +442,12 @@ namespace MpmOtm
               }
             return inside;
           }
+        case Shape::mesh_group:
+          Assert(groups != nullptr, ExcInternalError());
+          if constexpr (dim > 1)
+            return groups->group_at(point) == group_tag;
+          else
+            return false;
         default:
           return level_set->value(point) <= 0.;
       }

@@ -1,9 +1,12 @@
 #include <mpm_otm/base/plugins.h>
 #include <mpm_otm/base/read_point.h>
 #include <mpm_otm/base/subsection_names.h>
+#include <mpm_otm/grid/background_grid.h>
 #include <mpm_otm/materials/material_library.h>
 #include <mpm_otm/problems/custom_problem.h>
+#include <mpm_otm/problems/mesh_groups.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace MpmOtm
@@ -168,11 +171,24 @@ namespace MpmOtm
 
 
   template <int dim>
+  CustomProblem<dim>::~CustomProblem() = default;
+
+
+
+  template <int dim>
   void
-  CustomProblem<dim>::initialize(const Material<dim>    &material,
-                                 const BoundingBox<dim> &box)
+  CustomProblem<dim>::initialize(const Material<dim>       &material,
+                                 const BackgroundGrid<dim> &grid)
   {
-    Problem<dim>::initialize(material, box);
+    Problem<dim>::initialize(material, grid);
+    if constexpr (dim > 1)
+      if (grid.gmsh_file() != nullptr &&
+          std::any_of(bodies.begin(), bodies.end(), [](const Body<dim> &body) {
+            return body.is_mesh_group();
+          }))
+        mesh_groups = std::make_unique<MeshGroups<dim>>(*grid.gmsh_file());
+    for (auto &body : bodies)
+      body.check_on_grid(grid, mesh_groups.get());
   }
 
 

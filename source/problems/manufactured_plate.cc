@@ -1,6 +1,7 @@
 #include <deal.II/base/numbers.h>
 
 #include <mpm_otm/base/plugins.h>
+#include <mpm_otm/grid/background_grid.h>
 #include <mpm_otm/materials/material.h>
 #include <mpm_otm/problems/manufactured_plate.h>
 
@@ -49,14 +50,14 @@ namespace MpmOtm
 
   template <int dim>
   void
-  ManufacturedPlate<dim>::initialize(const Material<dim>    &material,
-                                     const BoundingBox<dim> &box)
+  ManufacturedPlate<dim>::initialize(const Material<dim>       &material,
+                                     const BackgroundGrid<dim> &grid)
   {
-    Problem<dim>::initialize(material, box);
-    rho    = material.density();
-    c      = std::sqrt(material.youngs_modulus() / rho);
-    lambda = material.lambda();
-    mu     = material.mu();
+    Problem<dim>::initialize(material, grid);
+    rho                         = material.density();
+    c                           = std::sqrt(material.youngs_modulus() / rho);
+    lambda                      = material.lambda();
+    mu                          = material.mu();
   }
 
 

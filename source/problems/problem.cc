@@ -1,5 +1,6 @@
 #include <deal.II/base/utilities.h>
 
+#include <mpm_otm/grid/background_grid.h>
 #include <mpm_otm/materials/material_library.h>
 #include <mpm_otm/problems/problem.h>
 
@@ -134,9 +135,10 @@ namespace MpmOtm
 
   template <int dim>
   void
-  Problem<dim>::initialize(const Material<dim> &, const BoundingBox<dim> &box)
+  Problem<dim>::initialize(const Material<dim> &,
+                           const BackgroundGrid<dim> &grid)
   {
-    grid_box = box;
+    grid_box = grid.box();
   }
 
 

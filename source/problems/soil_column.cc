@@ -2,6 +2,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <mpm_otm/base/plugins.h>
+#include <mpm_otm/grid/background_grid.h>
 #include <mpm_otm/materials/material.h>
 #include <mpm_otm/problems/soil_column.h>
 
@@ -50,11 +51,12 @@ namespace MpmOtm
 
   template <int dim>
   void
-  SoilColumn<dim>::initialize(const Material<dim>    &material,
-                              const BoundingBox<dim> &box)
+  SoilColumn<dim>::initialize(const Material<dim>       &material,
+                              const BackgroundGrid<dim> &grid)
   {
-    Problem<dim>::initialize(material, box);
-    const double grid_height = box.side_length(dim - 1);
+    Problem<dim>::initialize(material, grid);
+    const BoundingBox<dim> &box         = grid.box();
+    const double            grid_height = box.side_length(dim - 1);
     AssertThrow(requested_height <= grid_height * (1. + 1e-12),
                 ExcMessage("Soil column/Column height = " +
                            Utilities::to_string(requested_height) +

@@ -1,6 +1,7 @@
 #include <deal.II/base/numbers.h>
 
 #include <mpm_otm/base/plugins.h>
+#include <mpm_otm/grid/background_grid.h>
 #include <mpm_otm/materials/material.h>
 #include <mpm_otm/problems/traction_bar.h>
 
@@ -51,13 +52,14 @@ namespace MpmOtm
 
   template <int dim>
   void
-  TractionBar<dim>::initialize(const Material<dim>    &material,
-                               const BoundingBox<dim> &box)
+  TractionBar<dim>::initialize(const Material<dim>       &material,
+                               const BackgroundGrid<dim> &grid)
   {
-    Problem<dim>::initialize(material, box);
-    const double lower     = box.get_boundary_points().first[0];
-    const double upper     = box.get_boundary_points().second[0];
-    const double tolerance = 1e-10 * length;
+    Problem<dim>::initialize(material, grid);
+    const BoundingBox<dim> &box       = grid.box();
+    const double            lower     = box.get_boundary_points().first[0];
+    const double            upper     = box.get_boundary_points().second[0];
+    const double            tolerance = 1e-10 * length;
     {
       std::ostringstream message;
       message << "The traction bar is fixed at X = 0 and its material starts "

@@ -1,6 +1,7 @@
 #include <deal.II/base/numbers.h>
 
 #include <mpm_otm/base/plugins.h>
+#include <mpm_otm/grid/background_grid.h>
 #include <mpm_otm/materials/material.h>
 #include <mpm_otm/problems/vibrating_bar.h>
 
@@ -35,15 +36,16 @@ namespace MpmOtm
 
   template <int dim>
   void
-  VibratingBar<dim>::initialize(const Material<dim>    &material,
-                                const BoundingBox<dim> &box)
+  VibratingBar<dim>::initialize(const Material<dim>       &material,
+                                const BackgroundGrid<dim> &grid)
   {
-    Problem<dim>::initialize(material, box);
-    x0             = box.get_boundary_points().first[0];
-    length         = box.side_length(0);
-    const double c = material.wave_speed();
-    omega          = numbers::PI * c / length;
-    impedance      = material.density() * c;
+    Problem<dim>::initialize(material, grid);
+    const BoundingBox<dim> &box = grid.box();
+    x0                          = box.get_boundary_points().first[0];
+    length                      = box.side_length(0);
+    const double c              = material.wave_speed();
+    omega                       = numbers::PI * c / length;
+    impedance                   = material.density() * c;
     lateral = material.lambda() / (material.lambda() + 2. * material.mu());
   }
 

@@ -12,6 +12,7 @@
 #include <mpm_otm/grid_system/local_damping.h>
 #include <mpm_otm/grid_system/mass_matrix.h>
 #include <mpm_otm/io/checkpoint.h>
+#include <mpm_otm/io/monitoring_points.h>
 #include <mpm_otm/io/output_writer.h>
 #include <mpm_otm/material_points/material_points.h>
 #include <mpm_otm/materials/material_library.h>
@@ -219,6 +220,7 @@ namespace MpmOtm
         prm.leave_subsection();
       }
     OutputWriter<dim>::declare_parameters(prm);
+    MonitoringPoints<dim>::declare_parameters(prm);
     Checkpoint<dim>::declare_parameters(prm);
     BoundaryConditions<dim>::declare_parameters(prm, names.boundaries);
     LocalDamping<dim>::declare_parameters(prm);
@@ -323,6 +325,8 @@ namespace MpmOtm
     points->parse_parameters(prm);
     output = std::make_unique<OutputWriter<dim>>();
     output->parse_parameters(prm);
+    monitoring = std::make_unique<MonitoringPoints<dim>>();
+    monitoring->parse_parameters(prm);
     checkpoint = std::make_unique<Checkpoint<dim>>();
     checkpoint->parse_parameters(prm);
     boundary_conditions = std::make_unique<BoundaryConditions<dim>>();

@@ -16,6 +16,7 @@
 #include <mpm_otm/grid_system/mass_matrix.h>
 #include <mpm_otm/grid_system/nodal_system.h>
 #include <mpm_otm/io/checkpoint.h>
+#include <mpm_otm/io/monitoring_points.h>
 #include <mpm_otm/io/output_writer.h>
 #include <mpm_otm/material_points/material_points.h>
 #include <mpm_otm/materials/material_library.h>
@@ -40,7 +41,7 @@ namespace MpmOtm
     grid->create(communicator, grid_motion->moves_vertices());
     checkpoint->set_grid_fingerprint(grid->fingerprint());
 
-    problem_description->initialize(materials->default_material(), grid->box());
+    problem_description->initialize(materials->default_material(), *grid);
     if (grid_motion->moves_vertices() && grid->is_box())
       {
         // OTM and the unified approach mesh the material domain only: a
@@ -263,11 +264,18 @@ namespace MpmOtm
         resumed_state = std::make_unique<CheckpointState>();
         std::tie(resumed_step, current_time) =
           checkpoint->read(resumed_from, *points, *resumed_state, communicator);
+        // The run continues with the step it was started with: its steps
+        // are counted in it, and Time step = auto would find another to
+        // round-off on another number of ranks. (An explicit step is the
+        // same: the checkpoint refuses other parameters.)
+        time_step = resumed_state->shared("simulator/time step").at(0);
         grid_motion->load(*resumed_state);
         shape_functions->load(*resumed_state);
         system->load(*resumed_state);
         boundary_conditions->load(*resumed_state);
       }
+    const std::string monitored =
+      monitoring->enabled() ? monitoring->locate(*points, communicator) : "";
     output->initialize(prm,
                        problem_description->has_exact_solution(),
                        problem_description->has_exact_stress(),
@@ -280,6 +288,8 @@ namespace MpmOtm
       output->load(*resumed_state);
     else
       output->write_basis_picture(*shape_functions);
+    if (monitoring->enabled())
+      monitoring->write_header(output->directory(), resume, communicator);
 
     pcout << "mpm-otm: " << dim << "D, "
           << grid->triangulation().n_global_active_cells() << " cells, "
@@ -302,6 +312,7 @@ namespace MpmOtm
       pcout << locking_remedy->description() << std::endl;
     if (particle_transfer->flip_fraction() < 1.)
       pcout << particle_transfer->description() << std::endl;
+    pcout << monitored;
     if (resume)
       pcout << "resumed from <" << resumed_from << ">, written after time step "
             << resumed_step << " (t = " << current_time << ")" << std::endl;

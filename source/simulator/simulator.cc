@@ -21,6 +21,7 @@
 #include <mpm_otm/grid_system/mass_matrix.h>
 #include <mpm_otm/grid_system/nodal_system.h>
 #include <mpm_otm/io/checkpoint.h>
+#include <mpm_otm/io/monitoring_points.h>
 #include <mpm_otm/io/output_writer.h>
 #include <mpm_otm/material_points/material_points.h>
 #include <mpm_otm/materials/material_library.h>
@@ -124,6 +125,17 @@ namespace MpmOtm
           observer(step, statistics);
       };
 
+      // The rows of monitoring.csv.
+      const auto monitor = [&](const unsigned int step) {
+        TimerOutput::Scope scope(timer, "output");
+        monitoring->write(step,
+                          current_time,
+                          *points,
+                          *materials,
+                          output->directory(),
+                          communicator);
+      };
+
       EnergyMonitor<dim> energy_monitor(energy_growth_limit,
                                         grid->minimal_cell_size() / time_step,
                                         communicator);
@@ -144,6 +156,7 @@ namespace MpmOtm
         {
           energy_monitor.check(*points, *materials, stepper.supplied_work());
           report(0, true);
+          monitor(0);
         }
       unsigned int at_rest_step = numbers::invalid_unsigned_int;
       Activity::set("the time steps");
@@ -186,6 +199,11 @@ namespace MpmOtm
           current_time = (step == n_steps) ? end_time : current_time + dt;
           if (output_step || !signal.empty() || at_rest_step == step)
             report(step, output_step || at_rest_step == step);
+          if (monitoring->is_due(step,
+                                 output_step,
+                                 step == n_steps || at_rest_step == step ||
+                                   !signal.empty()))
+            monitor(step);
           if (at_rest_step == step)
             {
               pcout << "Quasi-static end: " << quasi_static_end->summary()
@@ -234,6 +252,7 @@ namespace MpmOtm
                                    const EnergyMonitor<dim> &energy_monitor)
   {
     CheckpointState state;
+    state.set_shared("simulator/time step", {time_step});
     stepper.save(state);
     energy_monitor.save(state);
     quasi_static_end->save(state);

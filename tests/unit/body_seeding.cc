@@ -71,6 +71,7 @@ subsection Material
   end
 end
 subsection Material heavy
+  set Model = hypo-elastic
   set Density = 5
 end
 subsection Gravity

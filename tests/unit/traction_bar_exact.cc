@@ -10,6 +10,7 @@
 #include <deal.II/base/numbers.h>
 
 #include <mpm_otm/base/plugins.h>
+#include <mpm_otm/grid/background_grid.h>
 #include <mpm_otm/materials/material.h>
 #include <mpm_otm/problems/problem.h>
 
@@ -28,16 +29,21 @@ struct Bar
   {
     ParameterHandler prm;
     Simulator<1>::declare_parameters(prm);
-    prm.parse_input_from_string("set Problem = traction bar\n" + parameters);
+    prm.parse_input_from_string(
+      "set Problem = traction bar\n" + parameters +
+      "subsection Mesh\n set Lower corner = " + Utilities::to_string(lower) +
+      "\n set Upper corner = " + Utilities::to_string(upper) +
+      "\n set Subdivisions = 4\nend\n");
     problem = PluginRegistry<Problem<1>>::create(prm.get("Problem"));
     problem->parse_parameters(prm);
     prm.enter_subsection("Material");
     material = PluginRegistry<Material<1>>::create(prm.get("Model"));
     material->parse_parameters(prm);
     prm.leave_subsection();
-    problem->initialize(*material,
-                        BoundingBox<1>(
-                          std::make_pair(Point<1>(lower), Point<1>(upper))));
+    BackgroundGrid<1> grid;
+    grid.parse_parameters(prm);
+    grid.create(MPI_COMM_SELF);
+    problem->initialize(*material, grid);
   }
 
   double

@@ -31,9 +31,10 @@ namespace MpmOtm
    * omega_max^2 (so dt_stable can only come out too large, by the
    * relative change of the last steps when they do not converge).
    * Functions whose mass is round-off (below 1e-6 of the largest point
-   * mass) are left out. It starts from a vector that depends on the global
-   * function numbers only, so every number of ranks finds the same value
-   * to round-off. Unlike the bound h / c of thesis Eq. 2.48, which holds
+   * mass) are left out. It starts from a vector that depends on the
+   * points' initial positions only (not on the global function numbers,
+   * which depend on the partition), so every number of ranks finds the same
+   * value to round-off, also when the iteration has not converged. Unlike the bound h / c of thesis Eq. 2.48, which holds
    * for linear functions with lumped mass in 1D, it accounts for the
    * family, its degree, the mass matrix and the dimension.
    *

@@ -111,6 +111,12 @@ namespace MpmOtm
     mesh_file() const;
 
     /**
+     * The checked Mesh file (nullptr for a box grid).
+     */
+    const GmshFile *
+    gmsh_file() const;
+
+    /**
      * The box covered by the grid: for a Mesh file, the bounding box of its
      * vertices (known after create()).
      */

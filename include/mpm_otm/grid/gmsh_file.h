@@ -6,6 +6,8 @@
 #include <map>
 #include <set>
 #include <string>
+#include <tuple>
+#include <vector>
 
 namespace MpmOtm
 {
@@ -64,12 +66,28 @@ namespace MpmOtm
     const std::string &
     format() const;
 
+    /**
+     * The names of the physical groups of dimension @p group_dimension
+     * ($PhysicalNames), by their tags; empty if the file names none.
+     */
+    std::map<types::material_id, std::string>
+    physical_names(const unsigned int group_dimension) const;
+
+    /**
+     * The name of the file.
+     */
+    const std::string &
+    name() const;
+
   private:
     void
     scan(std::istream &in);
 
     void
     scan_nodes(std::istream &in);
+
+    void
+    scan_physical_names(std::istream &in);
 
     void
     scan_elements(std::istream &in);
@@ -86,6 +104,9 @@ namespace MpmOtm
     bool         format_4 = false;
     /// Number of elements per Gmsh element type.
     std::map<int, unsigned int> elements_of_type;
+    /// The $PhysicalNames: dimension, tag and name of each.
+    std::vector<std::tuple<unsigned int, types::material_id, std::string>>
+      group_names;
     /// Node tags of the file.
     std::set<long> node_tags;
     /// Largest |z| of a node and the extent of the nodes in x and y.

@@ -29,9 +29,10 @@ namespace MpmOtm
 
     /**
      * Prepare @p directory for a new run: if it holds another run's output
-     * (a statistics.csv, parameters.prm, .pvd or .xdmf file), refuse unless
-     * @p overwrite, and then remove that run's step files, .pvd and .xdmf files
-     * and checkpoints; nothing else in the directory is touched.
+     * (a statistics.csv, monitoring.csv, parameters.prm, .pvd or .xdmf
+     * file), refuse unless @p overwrite, and then remove that run's step
+     * files, .pvd and .xdmf files, monitoring.csv and checkpoints; nothing
+     * else in the directory is touched.
      */
     std::string
     clear_previous_run(const std::string &directory, const bool overwrite);
@@ -39,7 +40,8 @@ namespace MpmOtm
     /**
      * Prepare @p directory for a run resumed after time step @p step:
      * remove the step files of later steps and unfinished checkpoints, and
-     * the rows of statistics.csv after that step.
+     * the rows of statistics.csv and monitoring.csv after that step (and a
+     * last row that an interruption cut off).
      */
     std::string
     trim_after_step(const std::string &directory, const unsigned int step);

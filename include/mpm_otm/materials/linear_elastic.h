@@ -28,6 +28,12 @@ namespace MpmOtm
                   const SymmetricTensor<2, dim> &stress,
                   const double                   initial_volume,
                   const double                   volume) const override;
+
+    /**
+     * False: the stress is a function of F alone.
+     */
+    bool
+    keeps_initial_stress() const override;
   };
 } // namespace MpmOtm
 

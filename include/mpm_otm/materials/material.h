@@ -120,6 +120,16 @@ namespace MpmOtm
     is_plastic() const;
 
     /**
+     * Whether the model keeps an initial stress: true for the models that
+     * integrate a stress rate (hypo-elastic and the plastic ones), false for
+     * those whose stress is a function of the deformation gradient alone
+     * (linear elastic, neo-Hookean), which would replace an initial stress
+     * by that of F = I, zero, in the first step.
+     */
+    virtual bool
+    keeps_initial_stress() const;
+
+    /**
      * Whether a point with these internal variables has lost contact with
      * its neighbours: a granular point opened beyond the density at which
      * it lost contact, without stress (false for models without such a

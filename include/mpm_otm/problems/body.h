@@ -20,11 +20,16 @@ namespace MpmOtm
   class Material;
   template <int dim>
   class MaterialLibrary;
+  template <int dim>
+  class BackgroundGrid;
+  template <int dim>
+  class MeshGroups;
 
   /**
    * One body of a user's problem, read from subsection "Body <name>": its
-   * shape (a box, a ball, a polygon in 2D, or the region f(x, y, z) <= 0 of
-   * a level-set expression), its material, its initial velocity and its
+   * shape (a box, a ball, a polygon in 2D, the region f(x, y, z) <= 0 of
+   * a level-set expression, or the cells of a physical group of the Gmsh
+   * file the grid is read from), its material, its initial velocity and its
    * initial stress (expressions, or geostatic: computed by the problem from
    * the weight of the material above, with the lateral stress ratio K0).
    * Material points are seeded where a body contains them.
@@ -47,6 +52,23 @@ namespace MpmOtm
     parse_parameters(ParameterHandler           &prm,
                      const std::string          &name,
                      const MaterialLibrary<dim> &materials);
+
+    /**
+     * Check the body against the background grid @p grid, on which the
+     * points are seeded: a box, ball or polygon must lie within the grid's
+     * box (a part outside would be cut off without a word); a mesh group
+     * must be a group of the grid's Mesh file, whose cells @p groups (made
+     * from that file; nullptr for a box grid) locates.
+     */
+    void
+    check_on_grid(const BackgroundGrid<dim> &grid,
+                  const MeshGroups<dim>     *groups);
+
+    /**
+     * Whether the body is a group of cells of the Mesh file.
+     */
+    bool
+    is_mesh_group() const;
 
     /**
      * The body's name.
@@ -99,7 +121,8 @@ namespace MpmOtm
       box,
       ball,
       polygon,
-      level_set
+      level_set,
+      mesh_group
     };
 
     std::string                            body_name;
@@ -110,6 +133,9 @@ namespace MpmOtm
     double                                 radius = 0;
     std::vector<Point<dim>>                polygon;
     std::unique_ptr<ParsedExpression<dim>> level_set;
+    std::string                            group;
+    types::material_id                     group_tag      = 0;
+    const MeshGroups<dim>                 *groups         = nullptr;
     unsigned int                           material       = 0;
     const Material<dim>                   *material_model = nullptr;
     double                                 lateral_ratio  = -1;

@@ -11,6 +11,10 @@
 
 namespace MpmOtm
 {
+  template <int dim>
+  class BackgroundGrid;
+  template <int dim>
+  class MeshGroups;
   /**
    * A problem written in the parameter file. The material is either the
    * bodies listed in the entry "Bodies" (each of any shape, with its own
@@ -26,6 +30,8 @@ namespace MpmOtm
   class CustomProblem : public Problem<dim>
   {
   public:
+    ~CustomProblem() override;
+
     static void
     declare_parameters(ParameterHandler &prm);
 
@@ -43,8 +49,8 @@ namespace MpmOtm
     defines_bodies() const override;
 
     void
-    initialize(const Material<dim>    &material,
-               const BoundingBox<dim> &grid_box) override;
+    initialize(const Material<dim>       &material,
+               const BackgroundGrid<dim> &grid) override;
 
     Tensor<1, dim>
     initial_velocity(const Point<dim> &X) const override;
@@ -101,7 +107,9 @@ namespace MpmOtm
     double
     vertical_stress(const Point<dim> &X) const;
 
-    std::vector<Body<dim>>                 bodies;
+    std::vector<Body<dim>> bodies;
+    /// The physical groups of the Mesh file, if a body is one.
+    std::unique_ptr<MeshGroups<dim>>       mesh_groups;
     std::unique_ptr<ParsedExpression<dim>> velocity;
     std::unique_ptr<ParsedExpression<dim>> force;
     std::unique_ptr<ParsedExpression<dim>> traction_function;

@@ -5,6 +5,8 @@
 
 namespace MpmOtm
 {
+  template <int dim>
+  class BackgroundGrid;
   /**
    * Neo-Hookean unit plate with the manufactured axis-aligned displacement
    * u1 = A sin(2 pi X1) sin(c pi t), u2 = A sin(2 pi X2) sin(c pi t + pi),
@@ -24,8 +26,8 @@ namespace MpmOtm
     parse_parameters(ParameterHandler &prm) override;
 
     void
-    initialize(const Material<dim>    &material,
-               const BoundingBox<dim> &grid_box) override;
+    initialize(const Material<dim>       &material,
+               const BackgroundGrid<dim> &grid) override;
 
     Tensor<1, dim>
     initial_velocity(const Point<dim> &X) const override;

@@ -12,6 +12,8 @@
 
 namespace MpmOtm
 {
+  template <int dim>
+  class BackgroundGrid;
   using namespace dealii;
 
   template <int dim>
@@ -154,11 +156,11 @@ namespace MpmOtm
     defines_bodies() const;
 
     /**
-     * Called once the material and the background box (for a Mesh file the
-     * bounding box of its vertices) are known.
+     * Called once the material and the background grid are known (its
+     * box: for a Mesh file the bounding box of its vertices).
      */
     virtual void
-    initialize(const Material<dim> &material, const BoundingBox<dim> &grid_box);
+    initialize(const Material<dim> &material, const BackgroundGrid<dim> &grid);
 
     /**
      * The box filled with material at t = 0 (default: the whole grid).

@@ -5,6 +5,8 @@
 
 namespace MpmOtm
 {
+  template <int dim>
+  class BackgroundGrid;
   /**
    * Column under self-weight (BENCHMARKS.md B6, thesis Sects. 4.3-4.4): the
    * vertical direction is the last coordinate, the bottom (boundary
@@ -26,8 +28,8 @@ namespace MpmOtm
     parse_parameters(ParameterHandler &prm) override;
 
     void
-    initialize(const Material<dim>    &material,
-               const BoundingBox<dim> &grid_box) override;
+    initialize(const Material<dim>       &material,
+               const BackgroundGrid<dim> &grid) override;
 
     /**
      * The grid up to the column's height (Soil column/Column height).

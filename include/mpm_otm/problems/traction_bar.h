@@ -5,6 +5,8 @@
 
 namespace MpmOtm
 {
+  template <int dim>
+  class BackgroundGrid;
   /**
    * Bar fixed at X = 0 and loaded from rest by a traction on its free end
    * X = l (BENCHMARKS.md B2, journal Sect. 8.2, Eq. 103, after Steffen,
@@ -47,8 +49,8 @@ namespace MpmOtm
      * Checks that the grid starts at x = 0 and reaches x = l.
      */
     void
-    initialize(const Material<dim>    &material,
-               const BoundingBox<dim> &grid_box) override;
+    initialize(const Material<dim>       &material,
+               const BackgroundGrid<dim> &grid) override;
 
     /**
      * [0, l] in x, the grid's extent in the other directions.

@@ -5,6 +5,8 @@
 
 namespace MpmOtm
 {
+  template <int dim>
+  class BackgroundGrid;
   /**
    * Bar with fixed ends set vibrating by v(X, 0) = v0 sin(pi X / L) in x
    * (BENCHMARKS.md B1, conference paper and journal Sect. 8.1; in 2D the bar
@@ -27,8 +29,8 @@ namespace MpmOtm
     parse_parameters(ParameterHandler &prm) override;
 
     void
-    initialize(const Material<dim>    &material,
-               const BoundingBox<dim> &grid_box) override;
+    initialize(const Material<dim>       &material,
+               const BackgroundGrid<dim> &grid) override;
 
     Tensor<1, dim>
     initial_velocity(const Point<dim> &X) const override;

@@ -41,6 +41,8 @@ namespace MpmOtm
   template <int dim>
   class OutputWriter;
   template <int dim>
+  class MonitoringPoints;
+  template <int dim>
   class BoundaryConditions;
   template <int dim>
   class LocalDamping;
@@ -215,6 +217,7 @@ namespace MpmOtm
     std::unique_ptr<MaterialLibrary<dim>>    materials;
     std::unique_ptr<Problem<dim>>            problem_description;
     std::unique_ptr<OutputWriter<dim>>       output;
+    std::unique_ptr<MonitoringPoints<dim>>   monitoring;
     std::unique_ptr<BoundaryConditions<dim>> boundary_conditions;
     std::unique_ptr<LocalDamping<dim>>       damping;
     std::unique_ptr<Checkpoint<dim>>         checkpoint;
