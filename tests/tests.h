@@ -48,6 +48,19 @@ namespace MpmOtmTests
   }
 
   /**
+   * A communicator of world rank 0 alone (MPI_COMM_NULL on the others), for
+   * runs on one rank inside a test on several.
+   */
+  inline MPI_Comm
+  first_rank_only()
+  {
+    MPI_Comm  single;
+    const int rank = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
+    MPI_Comm_split(MPI_COMM_WORLD, rank == 0 ? 0 : MPI_UNDEFINED, 0, &single);
+    return single;
+  }
+
+  /**
    * A number with @p digits significant digits, for output that must not
    * depend on round-off.
    */

@@ -5,15 +5,14 @@
 #include <mpm_otm/base/collective_error.h>
 #include <mpm_otm/base/read_point.h>
 #include <mpm_otm/io/monitoring_points.h>
+#include <mpm_otm/io/output_directory.h>
 #include <mpm_otm/material_points/material_points.h>
 #include <mpm_otm/material_points/property_layout.h>
 #include <mpm_otm/materials/material_library.h>
 
 #include <algorithm>
 #include <cctype>
-#include <cerrno>
 #include <cmath>
-#include <cstring>
 #include <fstream>
 #include <iomanip>
 #include <limits>
@@ -274,14 +273,14 @@ namespace MpmOtm
           }
         else
           {
-            std::ofstream file(name);
-            file << header() << '\n';
-            file.close();
-            if (!file)
-              problem = "Could not write <" + name +
-                        ">: " + std::string(std::strerror(errno)) +
-                        ". Free space on the disk of Output/Directory or "
-                        "choose another one.";
+            problem =
+              OutputDirectory::write_file_atomically(name,
+                                                     [&](std::ostream &out) {
+                                                       out << header() << '\n';
+                                                     });
+            if (!problem.empty())
+              problem += "Free space on the disk of Output/Directory or "
+                         "choose another one.";
           }
       }
     stop_if_any_rank_failed(communicator, problem, "", "");
@@ -339,19 +338,12 @@ namespace MpmOtm
             row[dim + d]     = x[d] - X[d];
             row[2 * dim + d] = properties[Layout::velocity + d];
           }
-        const SymmetricTensor<2, dim> sigma = Layout::get_stress(properties);
-        const double out_of_plane = Layout::get_out_of_plane_stress(properties);
-        SymmetricTensor<2, 3> full;
-        for (unsigned int i = 0; i < dim; ++i)
-          for (unsigned int j = i; j < dim; ++j)
-            full[i][j] = sigma[i][j];
-        for (unsigned int d = dim; d < 3; ++d)
-          full[d][d] = out_of_plane;
-        unsigned int c = 3 * dim;
+        const SymmetricTensor<2, 3> full = Layout::get_full_stress(properties);
+        unsigned int                c    = 3 * dim;
         if (dim == 1)
           {
             row[c++] = full[0][0];
-            row[c++] = out_of_plane;
+            row[c++] = full[1][1];
           }
         else
           {
@@ -378,8 +370,8 @@ namespace MpmOtm
     std::string problem;
     if (Utilities::MPI::this_mpi_process(communicator) == 0)
       {
-        const std::string name = directory + "/monitoring.csv";
-        std::ofstream     file(name, std::ios::app);
+        const std::string  name = directory + "/monitoring.csv";
+        std::ostringstream file;
         file << std::setprecision(12) << step << ',' << time;
         for (unsigned int k = 0; k < n_k; ++k)
           for (unsigned int v = 0; v < n; ++v)
@@ -392,10 +384,7 @@ namespace MpmOtm
                 file << "nan";
             }
         file << '\n';
-        file.close();
-        if (!file)
-          problem = "Could not write <" + name +
-                    ">: " + std::string(std::strerror(errno)) + ". ";
+        problem = OutputDirectory::append_to_file(name, file.str());
       }
     stop_if_any_rank_failed(
       communicator,

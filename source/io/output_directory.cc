@@ -107,6 +107,19 @@ namespace MpmOtm
 
 
     std::string
+    append_to_file(const std::string &file_name, const std::string &text)
+    {
+      std::ofstream file(file_name, std::ios::app);
+      file << text;
+      file.close();
+      return file ? "" :
+                    "Could not write <" + file_name +
+                      ">: " + std::string(std::strerror(errno)) + ". ";
+    }
+
+
+
+    std::string
     clear_previous_run(const std::string &directory, const bool overwrite)
     {
       std::error_code error;

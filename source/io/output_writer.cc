@@ -417,8 +417,8 @@ namespace MpmOtm
   {
     if (Utilities::MPI::this_mpi_process(mpi_communicator) != 0)
       return "";
-    const std::string name = output_directory + "/statistics.csv";
-    std::ofstream     file(name, std::ios::app);
+    const std::string  name = output_directory + "/statistics.csv";
+    std::ostringstream file;
     file << std::setprecision(12) << step << ',' << time << ','
          << statistics.kinetic_energy << ',' << statistics.strain_energy << ','
          << statistics.kinetic_energy + statistics.strain_energy +
@@ -445,10 +445,7 @@ namespace MpmOtm
       for (unsigned int d = 0; d < 3; ++d)
         file << ',' << statistics.angular_momentum[d];
     file << '\n';
-    file.close();
-    return file ? std::string() :
-                  "Could not write <" + name +
-                    ">: " + std::string(std::strerror(errno)) + ". ";
+    return OutputDirectory::append_to_file(name, file.str());
   }
 
 

@@ -12,24 +12,6 @@ namespace MpmOtm
   namespace
   {
     /**
-     * The three-dimensional Cauchy stress of a point: its in-plane stress
-     * and, in 2D (plane strain), sigma_zz; in 1D (uniaxial strain) the
-     * lateral stress in yy and zz.
-     */
-    template <int dim>
-    SymmetricTensor<2, 3>
-    full_stress(const SymmetricTensor<2, dim> &sigma, const double out_of_plane)
-    {
-      SymmetricTensor<2, 3> full;
-      for (unsigned int i = 0; i < dim; ++i)
-        for (unsigned int j = i; j < dim; ++j)
-          full[i][j] = sigma[i][j];
-      for (unsigned int d = dim; d < 3; ++d)
-        full[d][d] = out_of_plane;
-      return full;
-    }
-
-    /**
      * The logarithmic (Hencky) strain of the current configuration,
      * ln(V) = ln(F F^T) / 2, three-dimensional: F has F_zz = 1 in 2D (plane
      * strain) and F_yy = F_zz = 1 in 1D (uniaxial strain).
@@ -127,9 +109,7 @@ namespace MpmOtm
           values.push_back(particle.get_location()[d] - X[d]);
         for (unsigned int d = 0; d < dim; ++d)
           values.push_back(properties[Layout::velocity + d]);
-        const SymmetricTensor<2, 3> sigma =
-          full_stress(Layout::get_stress(properties),
-                      Layout::get_out_of_plane_stress(properties));
+        const SymmetricTensor<2, 3> sigma = Layout::get_full_stress(properties);
         push_tensor(sigma);
         values.push_back(trace(sigma) / 3.);
         values.push_back(std::sqrt(1.5) * deviator(sigma).norm());

@@ -54,10 +54,10 @@ namespace MpmOtm
                                      const BackgroundGrid<dim> &grid)
   {
     Problem<dim>::initialize(material, grid);
-    rho                         = material.density();
-    c                           = std::sqrt(material.youngs_modulus() / rho);
-    lambda                      = material.lambda();
-    mu                          = material.mu();
+    rho    = material.density();
+    c      = std::sqrt(material.youngs_modulus() / rho);
+    lambda = material.lambda();
+    mu     = material.mu();
   }
 
 

@@ -24,15 +24,6 @@ using namespace MpmOtmTests;
 
 namespace
 {
-  MPI_Comm
-  first_rank_only()
-  {
-    MPI_Comm  single;
-    const int rank = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
-    MPI_Comm_split(MPI_COMM_WORLD, rank == 0 ? 0 : MPI_UNDEFINED, 0, &single);
-    return single;
-  }
-
   /**
    * The time step of prm/@p prm with @p changes on @p communicator (0 on the
    * ranks outside it), known on every rank of the world.

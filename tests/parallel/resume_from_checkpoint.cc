@@ -60,18 +60,6 @@ namespace
   }
 
   /**
-   * A communicator of world rank 0 alone (MPI_COMM_NULL on the others).
-   */
-  MPI_Comm
-  first_rank_only()
-  {
-    MPI_Comm  single;
-    const int rank = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
-    MPI_Comm_split(MPI_COMM_WORLD, rank == 0 ? 0 : MPI_UNDEFINED, 0, &single);
-    return single;
-  }
-
-  /**
    * Run prm/@p prm with @p changes and checkpoints every @p interval steps
    * on @p first, resume it on @p second and compare the two ends.
    */

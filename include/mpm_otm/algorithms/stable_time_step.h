@@ -34,9 +34,10 @@ namespace MpmOtm
    * mass) are left out. It starts from a vector that depends on the
    * points' initial positions only (not on the global function numbers,
    * which depend on the partition), so every number of ranks finds the same
-   * value to round-off, also when the iteration has not converged. Unlike the bound h / c of thesis Eq. 2.48, which holds
-   * for linear functions with lumped mass in 1D, it accounts for the
-   * family, its degree, the mass matrix and the dimension.
+   * value to round-off, also when the iteration has not converged. Unlike the
+   * bound h / c of thesis Eq. 2.48, which holds for linear functions with
+   * lumped mass in 1D, it accounts for the family, its degree, the mass matrix
+   * and the dimension.
    *
    * With a mass matrix M other than the consistent one M_C (lumped,
    * partially lumped), the nodal update matters, because the velocities

@@ -28,6 +28,13 @@ namespace MpmOtm
                           const std::function<void(std::ostream &)> &write);
 
     /**
+     * Append @p text to the file @p file_name (a row of a table such as
+     * statistics.csv); returns "" or the problem, naming the file.
+     */
+    std::string
+    append_to_file(const std::string &file_name, const std::string &text);
+
+    /**
      * Prepare @p directory for a new run: if it holds another run's output
      * (a statistics.csv, monitoring.csv, parameters.prm, .pvd or .xdmf
      * file), refuse unless @p overwrite, and then remove that run's step

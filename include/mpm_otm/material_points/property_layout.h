@@ -140,6 +140,25 @@ namespace MpmOtm
     }
 
     /**
+     * The three-dimensional Cauchy stress of the point: its in-plane stress
+     * and, in 2D (plane strain), sigma_zz; in 1D (uniaxial strain) the
+     * lateral stress in yy and zz.
+     */
+    template <typename Number>
+    static SymmetricTensor<2, 3>
+    get_full_stress(const ArrayView<Number> &properties)
+    {
+      const SymmetricTensor<2, dim> sigma = get_stress(properties);
+      SymmetricTensor<2, 3>         full;
+      for (unsigned int i = 0; i < dim; ++i)
+        for (unsigned int j = i; j < dim; ++j)
+          full[i][j] = sigma[i][j];
+      for (unsigned int d = dim; d < 3; ++d)
+        full[d][d] = get_out_of_plane_stress(properties);
+      return full;
+    }
+
+    /**
      * The material number of the point.
      */
     template <typename Number>
