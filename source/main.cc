@@ -77,7 +77,8 @@ namespace
           for (const auto &[kind, list] :
                {std::pair<std::string, std::string>{"Body", "Bodies"},
                 {"Material", "Materials"},
-                {"Boundary", "Boundaries"}})
+                {"Boundary", "Boundaries"},
+                {"Surface load", "Surface loads"}})
             {
               const std::string marker =
                 "no such subsection to be entered: " + kind + " ";
@@ -230,9 +231,10 @@ main(int argc, char *argv[])
           // One subsection of each named kind, called "example", stands for
           // those the entries Materials, Bodies and Boundaries name.
           MpmOtm::SubsectionNames examples;
-          examples.materials  = {"example"};
-          examples.bodies     = {"example"};
-          examples.boundaries = {"example"};
+          examples.materials     = {"example"};
+          examples.bodies        = {"example"};
+          examples.boundaries    = {"example"};
+          examples.surface_loads = {"example"};
           dealii::ParameterHandler prm;
           if (dimension == "1")
             MpmOtm::Simulator<1>::declare_parameters(prm, examples);

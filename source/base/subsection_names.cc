@@ -36,6 +36,13 @@ namespace MpmOtm
                       "or a prescribed velocity). Sides not named keep the "
                       "problem's own conditions (free for Problem = custom "
                       "unless 'Custom problem/Fixed components' fixes them).");
+    prm.declare_entry("Surface loads",
+                      "",
+                      Patterns::List(Patterns::Anything()),
+                      "Names of loads on parts of the bodies' surfaces (a "
+                      "pressure or a traction on a segment in 2D, an "
+                      "axis-parallel rectangle in 3D), each defined in a "
+                      "subsection 'Surface load <name>'.");
   }
 
 
@@ -77,9 +84,10 @@ namespace MpmOtm
     declare_parameters(prm);
     prm.parse_input_from_string(parameter_text, "", true);
     SubsectionNames result;
-    result.materials  = names_in(prm, "Materials");
-    result.bodies     = names_in(prm, "Bodies");
-    result.boundaries = names_in(prm, "Boundaries");
+    result.materials     = names_in(prm, "Materials");
+    result.bodies        = names_in(prm, "Bodies");
+    result.boundaries    = names_in(prm, "Boundaries");
+    result.surface_loads = names_in(prm, "Surface loads");
 
     // The subsections the text opens, as "<kind> <name>" (comments and
     // surplus spaces removed). A file that includes others may define them
@@ -96,8 +104,13 @@ namespace MpmOtm
         for (const auto &word : words)
           if (!word.empty())
             nonempty.push_back(word);
-        if (nonempty.size() == 3 && nonempty[0] == "subsection")
-          opened.push_back(nonempty[1] + " " + nonempty[2]);
+        if (nonempty.size() >= 3 && nonempty[0] == "subsection")
+          {
+            std::string opened_name = nonempty[1];
+            for (unsigned int i = 2; i < nonempty.size(); ++i)
+              opened_name += " " + nonempty[i];
+            opened.push_back(opened_name);
+          }
         includes = includes || (!nonempty.empty() && nonempty[0] == "include");
       }
     if (includes)
@@ -105,7 +118,10 @@ namespace MpmOtm
     for (const auto &[kind, entry, names] :
          {std::make_tuple("Material", "Materials", &result.materials),
           std::make_tuple("Body", "Bodies", &result.bodies),
-          std::make_tuple("Boundary", "Boundaries", &result.boundaries)})
+          std::make_tuple("Boundary", "Boundaries", &result.boundaries),
+          std::make_tuple("Surface load",
+                          "Surface loads",
+                          &result.surface_loads)})
       for (const auto &name : *names)
         AssertThrow(std::find(opened.begin(),
                               opened.end(),

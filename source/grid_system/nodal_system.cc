@@ -101,8 +101,10 @@ namespace MpmOtm
     std::vector<Tensor<1, dim>> traction(2 * dim);
     for (const auto id : problem.traction_boundaries())
       traction[id] = problem.traction(id, time);
-    const bool           has_body_force = problem.has_body_force();
-    const Tensor<1, dim> gravity        = problem.gravity(time);
+    const bool               has_body_force    = problem.has_body_force();
+    const Tensor<1, dim>     gravity           = problem.gravity(time);
+    const SurfaceLoads<dim> &surface_loads     = problem.surface_loads();
+    const bool               has_surface_loads = !surface_loads.empty();
 
     double *const mass = lumped_mass.get_values();
     double       *q[dim];
@@ -157,6 +159,16 @@ namespace MpmOtm
           external += properties[Layout::traction_measure] *
                       traction[static_cast<unsigned int>(
                         properties[Layout::traction_boundary])];
+        // A surface load acts at the surface point x_p + offset, whose
+        // function values are phi_i + grad phi_i . offset.
+        typename SurfaceLoads<dim>::PointLoad surface_load;
+        const bool                            loaded =
+          has_surface_loads && surface_loads.carries_load(properties);
+        if (loaded)
+          {
+            surface_load = surface_loads.load_on(properties, time);
+            external += surface_load.force;
+          }
         external_power += external * v;
         if (m > 0.)
           external_force_squared_by_mass += external.norm_square() / m;
@@ -185,6 +197,10 @@ namespace MpmOtm
             batch_force[j] +=
               phi * external - volume * (sigma * point.gradients[j]);
           }
+        if (loaded)
+          for (unsigned int j = 0; j < point.n; ++j)
+            batch_force[j] +=
+              (point.gradients[j] * surface_load.offset) * surface_load.force;
         particle_mass[k] = m;
         ++k;
       }

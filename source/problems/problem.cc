@@ -47,6 +47,25 @@ namespace MpmOtm
     for (unsigned int d = 0; d < dim; ++d)
       gravity_vector[d] = values.size() == dim ? values[d] : values[0];
     parse_parameters(prm);
+    loads.parse_parameters(prm);
+  }
+
+
+
+  template <int dim>
+  const SurfaceLoads<dim> &
+  Problem<dim>::surface_loads() const
+  {
+    return loads;
+  }
+
+
+
+  template <int dim>
+  SurfaceLoads<dim> &
+  Problem<dim>::surface_loads()
+  {
+    return loads;
   }
 
 

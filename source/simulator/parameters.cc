@@ -219,6 +219,7 @@ namespace MpmOtm
         Body<dim>::declare_parameters(prm);
         prm.leave_subsection();
       }
+    SurfaceLoads<dim>::declare_parameters(prm, names.surface_loads);
     OutputWriter<dim>::declare_parameters(prm);
     MonitoringPoints<dim>::declare_parameters(prm);
     Checkpoint<dim>::declare_parameters(prm);
@@ -274,6 +275,7 @@ namespace MpmOtm
                              method->fixed_grid(),
                              mass_matrix->is_lumped());
     particle_transfer->reserve_point_variables(*materials);
+    problem_description->surface_loads().reserve_point_variables(*materials);
     deactivation_threshold = prm.get_double("Deactivation threshold");
     {
       std::string remedy       = prm.get("Volumetric locking remedy");
@@ -331,6 +333,17 @@ namespace MpmOtm
     checkpoint->parse_parameters(prm);
     boundary_conditions = std::make_unique<BoundaryConditions<dim>>();
     boundary_conditions->parse_parameters(prm);
+    for (const auto &name : problem_description->surface_loads().names())
+      {
+        const auto boundaries = boundary_conditions->names();
+        AssertThrow(std::find(boundaries.begin(), boundaries.end(), name) ==
+                      boundaries.end(),
+                    ExcMessage("Surface loads and Boundaries both name <" +
+                               name + ">: statistics.csv has the columns " +
+                               name +
+                               "_force_* of each, so give them different "
+                               "names."));
+      }
     boundary_conditions->check_method(prm.get("Method"),
                                       method->fixed_grid(),
                                       nodal_update->needs_nodal_accelerations(),

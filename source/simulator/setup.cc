@@ -74,6 +74,7 @@ namespace MpmOtm
       }
     Activity::set("seeding the material points (Particles per cell)");
     points->seed(*grid, BodySeeder<dim>(*problem_description, *materials));
+    problem_description->surface_loads().assign_points(*points);
     if (grid_motion->moves_vertices() && !grid->is_box())
       {
         // The same condition on a Mesh file: no point of the seeding
@@ -227,7 +228,8 @@ namespace MpmOtm
                             grid->minimal_cell_size() * time_step /
                               stable.time_step);
     // Every load expression is evaluated before anything is written: the
-    // body force at every point's initial position and the tractions, at
+    // body force at every point's initial position, the tractions and the
+    // surface loads, at
     // the start and at the end time. An expression that does not evaluate
     // then stops the run here instead of in its first step.
     {
@@ -245,6 +247,8 @@ namespace MpmOtm
                     t);
               for (const auto id : problem_description->traction_boundaries())
                 problem_description->traction(id, t);
+              problem_description->surface_loads().check_expressions(*points,
+                                                                     t);
             }
         }
       catch (const std::exception &error)
@@ -281,7 +285,7 @@ namespace MpmOtm
                        problem_description->has_exact_stress(),
                        communicator,
                        *materials,
-                       boundary_conditions->names(),
+                       reaction_names(),
                        problem_description->has_gravity(),
                        resumed_step);
     if (resume)

@@ -96,9 +96,13 @@ namespace MpmOtm
         statistics.grid_kinetic_energy = system->kinetic_energy();
         particle_transfer
           ->add_affine_angular_momentum(*points, statistics.angular_momentum);
-        statistics.boundary_names = boundary_conditions->names();
+        statistics.boundary_names = reaction_names();
         statistics.boundary_reactions =
           boundary_conditions->reactions_and_displacements(regular_output);
+        for (const auto &load :
+             problem_description->surface_loads()
+               .forces_and_displacements(*points, current_time))
+          statistics.boundary_reactions.push_back(load);
         output->write(step,
                       current_time,
                       *points,
@@ -241,6 +245,18 @@ namespace MpmOtm
       throw StoppedBySignal(stop_message, stopped_by);
     AssertThrow(stop_message.empty(), ExcMessage(stop_message));
     return statistics;
+  }
+
+
+
+  template <int dim>
+  std::vector<std::string>
+  Simulator<dim>::reaction_names() const
+  {
+    auto names = boundary_conditions->names();
+    for (const auto &name : problem_description->surface_loads().names())
+      names.push_back(name);
+    return names;
   }
 
 

@@ -12,11 +12,11 @@ namespace MpmOtm
 
   /**
    * The names a parameter file gives to its repeated subsections: the
-   * entries "Materials", "Bodies" and "Boundaries" list them, and each name
-   * then has a subsection "Material <name>", "Body <name>" or
-   * "Boundary <name>". ParameterHandler needs every subsection declared
-   * before it parses a file, so the names are read first, from the file's
-   * text, by read().
+   * entries "Materials", "Bodies", "Boundaries" and "Surface loads" list
+   * them, and each name then has a subsection "Material <name>",
+   * "Body <name>", "Boundary <name>" or "Surface load <name>". ParameterHandler
+   * needs every subsection declared before it parses a file, so the names are
+   * read first, from the file's text, by read().
    */
   struct SubsectionNames
   {
@@ -26,9 +26,11 @@ namespace MpmOtm
     std::vector<std::string> bodies;
     /// Names of the boundary conditions.
     std::vector<std::string> boundaries;
+    /// Names of the loads on parts of the bodies' surfaces.
+    std::vector<std::string> surface_loads;
 
     /**
-     * Declare the three entries that list the names.
+     * Declare the entries that list the names.
      */
     static void
     declare_parameters(ParameterHandler &prm);

@@ -6,6 +6,8 @@
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/tensor.h>
 
+#include <mpm_otm/problems/surface_loads.h>
+
 #include <string>
 #include <utility>
 #include <vector>
@@ -238,11 +240,26 @@ namespace MpmOtm
     static std::vector<FixedComponents<dim>>
     parse_fixed_components(const std::string &text, const std::string &entry);
 
+    /**
+     * The loads on parts of the bodies' surfaces (entry "Surface loads"),
+     * read by parse().
+     */
+    const SurfaceLoads<dim> &
+    surface_loads() const;
+
+    /**
+     * The same, to reserve their point variables and give them their
+     * points.
+     */
+    SurfaceLoads<dim> &
+    surface_loads();
+
   protected:
     BoundingBox<dim>            grid_box;
     const MaterialLibrary<dim> *materials = nullptr;
     Tensor<1, dim>              gravity_vector;
     double                      gravity_ramp_time = 0;
+    SurfaceLoads<dim>           loads;
   };
 } // namespace MpmOtm
 

@@ -182,6 +182,13 @@ namespace MpmOtm
 
   private:
     /**
+     * The names of the named boundary conditions and then of the surface
+     * loads: the forces and displacements of statistics.csv.
+     */
+    std::vector<std::string>
+    reaction_names() const;
+
+    /**
      * Write a checkpoint after step @p step with the state of every part of
      * the run, including @p stepper's and @p energy_monitor's.
      */
