@@ -84,8 +84,11 @@ namespace MpmOtm
 
 
 
-  GmshFile::GmshFile(const std::string &filename, const unsigned int dim)
+  GmshFile::GmshFile(const std::string &filename,
+                     const unsigned int dim,
+                     const std::string &entry)
     : filename(filename)
+    , entry_name(entry)
     , dimension(dim)
   {
     AssertThrow(dim == 2 || dim == 3,
@@ -178,7 +181,7 @@ namespace MpmOtm
   GmshFile::fail(const std::string &what) const
   {
     AssertThrow(false,
-                ExcMessage("Mesh/Mesh file: <" + filename + "> " + what + "."));
+                ExcMessage(entry_name + ": <" + filename + "> " + what + "."));
     std::abort();
   }
 
@@ -519,6 +522,14 @@ namespace MpmOtm
   GmshFile::name() const
   {
     return filename;
+  }
+
+
+
+  const std::string &
+  GmshFile::entry() const
+  {
+    return entry_name;
   }
 
 

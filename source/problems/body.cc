@@ -113,7 +113,8 @@ namespace MpmOtm
                       "polygon (2D): inside the closed polygon of Vertices; "
                       "level set: where the expression Level set is <= 0; "
                       "mesh group: the cells of the physical group Group of "
-                      "Mesh/Mesh file.");
+                      "Mesh file (the grid's Mesh/Mesh file unless the body "
+                      "names its own).");
     prm.declare_entry("Lower corner",
                       "",
                       Patterns::List(Patterns::Double(), 0, dim),
@@ -147,7 +148,16 @@ namespace MpmOtm
                       Patterns::Anything(),
                       "Shape = mesh group: the name (of $PhysicalNames) or "
                       "the tag of a physical group of surfaces (2D) or "
-                      "volumes (3D) of Mesh/Mesh file.");
+                      "volumes (3D) of the Mesh file.");
+    prm.declare_entry("Mesh file",
+                      "",
+                      Patterns::Anything(),
+                      "Shape = mesh group: the Gmsh file (format 2 or 4.1) "
+                      "whose group the body is, when the grid is another "
+                      "mesh or a box (a relative path starts in the "
+                      "directory the program runs in). Empty: the grid's "
+                      "Mesh/Mesh file. The body gets the grid's points that "
+                      "lie in the group's cells.");
     prm.declare_entry("Material",
                       "default",
                       Patterns::Anything(),
@@ -238,8 +248,9 @@ namespace MpmOtm
                     ExcMessage(entry("Shape") +
                                " = mesh group needs a Mesh file, which is "
                                "2D or 3D."));
-        shape = Shape::mesh_group;
-        group = Utilities::trim(prm.get("Group"));
+        shape      = Shape::mesh_group;
+        group      = Utilities::trim(prm.get("Group"));
+        group_file = Utilities::trim(prm.get("Mesh file"));
         AssertThrow(!group.empty(),
                     ExcMessage(entry("Group") +
                                " is empty: Shape = mesh group needs the name "
@@ -335,10 +346,13 @@ namespace MpmOtm
                     ExcMessage(path + "/Shape = mesh group needs the grid "
                                       "of a Mesh file (Mesh/Mesh file), "
                                       "whose physical groups name the "
-                                      "cells; the grid is a box."));
+                                      "cells, or the body's own Mesh "
+                                      "file; the grid is a box."));
         groups    = mesh_groups;
         group_tag = groups->tag(group, path + "/Group");
-        return;
+        // The grid's own groups lie in it.
+        if (group_file.empty())
+          return;
       }
     if (shape == Shape::level_set)
       return;
@@ -346,6 +360,10 @@ namespace MpmOtm
     Point<dim> lower, upper;
     switch (shape)
       {
+        case Shape::mesh_group:
+          std::tie(lower, upper) =
+            groups->bounding_box(group_tag).get_boundary_points();
+          break;
         case Shape::box:
           std::tie(lower, upper) = box.get_boundary_points();
           break;
@@ -394,6 +412,15 @@ namespace MpmOtm
                                       "(Mesh/Mesh file).");
           AssertThrow(false, ExcMessage(message.str()));
         }
+  }
+
+
+
+  template <int dim>
+  const std::string &
+  Body<dim>::group_mesh_file() const
+  {
+    return group_file;
   }
 
 

@@ -2,6 +2,7 @@
 #include <mpm_otm/base/read_point.h>
 #include <mpm_otm/base/subsection_names.h>
 #include <mpm_otm/grid/background_grid.h>
+#include <mpm_otm/grid/gmsh_file.h>
 #include <mpm_otm/materials/material_library.h>
 #include <mpm_otm/problems/custom_problem.h>
 #include <mpm_otm/problems/mesh_groups.h>
@@ -181,14 +182,28 @@ namespace MpmOtm
                                  const BackgroundGrid<dim> &grid)
   {
     Problem<dim>::initialize(material, grid);
+    // Each Mesh file is read once, however many bodies are its groups.
+    mesh_groups.clear();
     if constexpr (dim > 1)
-      if (grid.gmsh_file() != nullptr &&
-          std::any_of(bodies.begin(), bodies.end(), [](const Body<dim> &body) {
-            return body.is_mesh_group();
-          }))
-        mesh_groups = std::make_unique<MeshGroups<dim>>(*grid.gmsh_file());
+      for (const auto &body : bodies)
+        if (body.is_mesh_group() &&
+            mesh_groups.find(body.group_mesh_file()) == mesh_groups.end())
+          {
+            const std::string &file = body.group_mesh_file();
+            if (!file.empty())
+              mesh_groups[file] = std::make_unique<MeshGroups<dim>>(
+                GmshFile(file, dim, "Body " + body.name() + "/Mesh file"));
+            else if (grid.gmsh_file() != nullptr)
+              mesh_groups[file] =
+                std::make_unique<MeshGroups<dim>>(*grid.gmsh_file());
+          }
     for (auto &body : bodies)
-      body.check_on_grid(grid, mesh_groups.get());
+      {
+        const auto groups = mesh_groups.find(body.group_mesh_file());
+        body.check_on_grid(grid,
+                           groups == mesh_groups.end() ? nullptr :
+                                                         groups->second.get());
+      }
   }
 
 

@@ -15,6 +15,7 @@ namespace MpmOtm
   template <int dim>
   MeshGroups<dim>::MeshGroups(const GmshFile &file)
     : file_name(file.name())
+    , file_entry(file.entry())
     , simplex(file.is_simplex())
   {
     // A Mesh file is 2D or 3D; MeshGroups<1> exists for the 1D problems'
@@ -74,8 +75,8 @@ namespace MpmOtm
                       std::to_string(n_cells) + " cells)";
           }
         AssertThrow(false,
-                    ExcMessage(entry + " = " + group + ": Mesh/Mesh file <" +
-                               file_name + "> has no group of " +
+                    ExcMessage(entry + " = " + group + ": " + file_entry +
+                               " <" + file_name + "> has no group of " +
                                (dim == 2 ? "surfaces" : "volumes") +
                                " of that name or tag; its cells' groups are " +
                                groups +
@@ -112,6 +113,20 @@ namespace MpmOtm
       return numbers::invalid_material_id;
     hint = found.first;
     return found.first->material_id();
+  }
+
+
+
+  template <int dim>
+  BoundingBox<dim>
+  MeshGroups<dim>::bounding_box(const types::material_id tag) const
+  {
+    std::vector<Point<dim>> vertices;
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->material_id() == tag)
+        for (const unsigned int v : cell->vertex_indices())
+          vertices.push_back(cell->vertex(v));
+    return BoundingBox<dim>(vertices);
   }
 
 

@@ -14,9 +14,10 @@ namespace MpmOtm
   using namespace dealii;
 
   /**
-   * A Gmsh mesh file (the entry Mesh/Mesh file), checked before deal.II
+   * A Gmsh mesh file (the entry Mesh/Mesh file, or a body's own Mesh
+   * file for its mesh group), checked before deal.II
    * reads it: the constructor scans the whole file and stops, with a
-   * message naming Mesh/Mesh file and the file, if it cannot be opened, is
+   * message naming the entry and the file, if it cannot be opened, is
    * not an ASCII file of format 2 (2.0 to 2.2) or 4.1, is truncated or
    * malformed (a section out of order, a count that does not match, an
    * element with a node that does not exist), holds elements other than
@@ -33,9 +34,12 @@ namespace MpmOtm
   {
   public:
     /**
-     * Scan and check @p filename for a mesh of dimension @p dim (2 or 3).
+     * Scan and check @p filename for a mesh of dimension @p dim (2 or 3);
+     * @p entry is the parameter that names the file, for messages.
      */
-    GmshFile(const std::string &filename, const unsigned int dim);
+    GmshFile(const std::string &filename,
+             const unsigned int dim,
+             const std::string &entry = "Mesh/Mesh file");
 
     /**
      * Read the mesh into the empty @p triangulation (serial, or
@@ -79,6 +83,12 @@ namespace MpmOtm
     const std::string &
     name() const;
 
+    /**
+     * The parameter that names the file.
+     */
+    const std::string &
+    entry() const;
+
   private:
     void
     scan(std::istream &in);
@@ -93,12 +103,13 @@ namespace MpmOtm
     scan_elements(std::istream &in);
 
     /**
-     * Stop with @p what, prefixed by Mesh/Mesh file and the file name.
+     * Stop with @p what, prefixed by the entry and the file name.
      */
     [[noreturn]] void
     fail(const std::string &what) const;
 
     std::string  filename;
+    std::string  entry_name;
     unsigned int dimension;
     std::string  version;
     bool         format_4 = false;

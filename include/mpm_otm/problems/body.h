@@ -32,6 +32,8 @@ namespace MpmOtm
    * file the grid is read from), its material, its initial velocity and its
    * initial stress (expressions, or geostatic: computed by the problem from
    * the weight of the material above, with the lateral stress ratio K0).
+   * A mesh group may be one of the grid's Mesh file or of a file of the
+   * body's own (the grid being a box or another mesh).
    * Material points are seeded where a body contains them.
    */
   template <int dim>
@@ -55,10 +57,12 @@ namespace MpmOtm
 
     /**
      * Check the body against the background grid @p grid, on which the
-     * points are seeded: a box, ball or polygon must lie within the grid's
-     * box (a part outside would be cut off without a word); a mesh group
-     * must be a group of the grid's Mesh file, whose cells @p groups (made
-     * from that file; nullptr for a box grid) locates.
+     * points are seeded: a box, ball, polygon or group of the body's own
+     * Mesh file must lie within the grid's box (a part outside would be
+     * cut off without a word); a mesh group must be a group of the Mesh
+     * file whose cells @p groups locates (made from the body's own file
+     * (group_mesh_file()) or the grid's; nullptr for a box grid and no file
+     * of the body's own).
      */
     void
     check_on_grid(const BackgroundGrid<dim> &grid,
@@ -69,6 +73,12 @@ namespace MpmOtm
      */
     bool
     is_mesh_group() const;
+
+    /**
+     * The body's own Mesh file of its group; empty for the grid's.
+     */
+    const std::string &
+    group_mesh_file() const;
 
     /**
      * The body's name.
@@ -134,6 +144,7 @@ namespace MpmOtm
     std::vector<Point<dim>>                polygon;
     std::unique_ptr<ParsedExpression<dim>> level_set;
     std::string                            group;
+    std::string                            group_file;
     types::material_id                     group_tag      = 0;
     const MeshGroups<dim>                 *groups         = nullptr;
     unsigned int                           material       = 0;

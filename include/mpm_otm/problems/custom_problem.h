@@ -5,6 +5,7 @@
 #include <mpm_otm/problems/body.h>
 #include <mpm_otm/problems/problem.h>
 
+#include <map>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -108,14 +109,15 @@ namespace MpmOtm
     vertical_stress(const Point<dim> &X) const;
 
     std::vector<Body<dim>> bodies;
-    /// The physical groups of the Mesh file, if a body is one.
-    std::unique_ptr<MeshGroups<dim>>       mesh_groups;
-    std::unique_ptr<ParsedExpression<dim>> velocity;
-    std::unique_ptr<ParsedExpression<dim>> force;
-    std::unique_ptr<ParsedExpression<dim>> traction_function;
-    std::unique_ptr<ParsedExpression<dim>> displacement;
-    std::vector<FixedComponents<dim>>      fixed;
-    std::vector<types::boundary_id>        traction_ids;
+    /// The physical groups of the Mesh files the bodies are groups of, by
+    /// the bodies' entry Mesh file (empty: the grid's).
+    std::map<std::string, std::unique_ptr<MeshGroups<dim>>> mesh_groups;
+    std::unique_ptr<ParsedExpression<dim>>                  velocity;
+    std::unique_ptr<ParsedExpression<dim>>                  force;
+    std::unique_ptr<ParsedExpression<dim>>                  traction_function;
+    std::unique_ptr<ParsedExpression<dim>>                  displacement;
+    std::vector<FixedComponents<dim>>                       fixed;
+    std::vector<types::boundary_id>                         traction_ids;
     /// The box material region, if given (else the grid's box).
     std::optional<BoundingBox<dim>> region;
   };

@@ -1,6 +1,7 @@
 #ifndef mpm_otm_problems_mesh_groups_h
 #define mpm_otm_problems_mesh_groups_h
 
+#include <deal.II/base/bounding_box.h>
 #include <deal.II/base/point.h>
 #include <deal.II/base/types.h>
 #include <deal.II/grid/tria.h>
@@ -29,11 +30,11 @@ namespace MpmOtm
 
   /**
    * The physical groups of the cells of a Gmsh file (Body/Shape = mesh
-   * group): which group a point lies in, and the group a name or tag in a
-   * parameter file means. deal.II's reader gives every cell its physical
-   * tag as material id; this class keeps a serial copy of the file's mesh
-   * on every rank (the background grid may be distributed, and a body's
-   * geostatic stress asks for points anywhere above its own), with
+   * group), the grid's or a body's own: which group a point lies in, and
+   * the group a name or tag in a parameter file means. deal.II's reader gives
+   * every cell its physical tag as material id; this class keeps a serial copy
+   * of the file's mesh on every rank (the background grid may be distributed,
+   * and a body's geostatic stress asks for points anywhere above its own), with
    * deal.II's search for quadrilaterals/hexahedra and find_simplex() for
    * triangles/tetrahedra.
    */
@@ -63,8 +64,16 @@ namespace MpmOtm
     types::material_id
     group_at(const Point<dim> &point) const;
 
+    /**
+     * The bounding box of the vertices of the cells of group @p tag.
+     */
+    BoundingBox<dim>
+    bounding_box(const types::material_id tag) const;
+
   private:
-    std::string                                               file_name;
+    std::string file_name;
+    /// The parameter that names the file.
+    std::string                                               file_entry;
     bool                                                      simplex = false;
     Triangulation<dim>                                        triangulation;
     std::unique_ptr<Mapping<dim, dim>>                        mapping;
