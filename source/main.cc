@@ -4,6 +4,7 @@
 #include <mpm_otm/base/activity.h>
 #include <mpm_otm/base/stop_signal.h>
 #include <mpm_otm/simulator/simulator.h>
+#include <mpm_otm/simulator/strength_reduction.h>
 
 #ifdef __linux__
 #  include <sys/prctl.h>
@@ -109,6 +110,21 @@ namespace
         prm.enter_subsection("Output");
         prm.set("Directory", resume_directory);
         prm.leave_subsection();
+      }
+    if (MpmOtm::StrengthReduction<dim>::is_requested(prm))
+      {
+        AssertThrow(resume_directory.empty(),
+                    dealii::ExcMessage(
+                      "--resume: <" + resume_directory +
+                      "> holds (a trial of) a strength reduction "
+                      "(Analysis = strength reduction), which is not "
+                      "resumed: run it again, with Strength reduction/Lower "
+                      "factor and Upper factor narrowed to what its "
+                      "strength-reduction.csv shows."));
+        MpmOtm::StrengthReduction<dim> analysis(MPI_COMM_WORLD, std::cout);
+        analysis.parse_parameters(prm);
+        analysis.run(prm);
+        return;
       }
     MpmOtm::Simulator<dim> simulator(MPI_COMM_WORLD, std::cout);
     simulator.parse_parameters(prm);

@@ -84,6 +84,17 @@ namespace MpmOtm
 
 
   template <int dim>
+  void
+  DruckerPrager<dim>::reduce_strength(const double factor)
+  {
+    strength = strength.reduced(factor);
+    peak     = make_cone(strength);
+    residual = make_cone(strength.at(strength.softening_end));
+  }
+
+
+
+  template <int dim>
   typename DruckerPrager<dim>::Cone
   DruckerPrager<dim>::make_cone(
     const typename PlasticMaterial<dim>::FrictionalParameters &strength) const

@@ -103,6 +103,13 @@ namespace MpmOtm
 
 
   template <int dim>
+  void
+  Material<dim>::reduce_strength(const double)
+  {}
+
+
+
+  template <int dim>
   bool
   Material<dim>::keeps_initial_stress() const
   {

@@ -217,6 +217,16 @@ namespace MpmOtm
 
 
   template <int dim>
+  void
+  MaterialLibrary<dim>::reduce_strength(const double factor)
+  {
+    for (auto &material : materials)
+      material->reduce_strength(factor);
+  }
+
+
+
+  template <int dim>
   double
   MaterialLibrary<dim>::maximal_wave_speed() const
   {

@@ -99,6 +99,17 @@ namespace MpmOtm
 
 
   template <int dim>
+  void
+  MohrCoulomb<dim>::reduce_strength(const double factor)
+  {
+    strength = strength.reduced(factor);
+    peak     = make_surface(strength);
+    residual = make_surface(strength.at(strength.softening_end));
+  }
+
+
+
+  template <int dim>
   typename MohrCoulomb<dim>::Surface
   MohrCoulomb<dim>::make_surface(
     const typename PlasticMaterial<dim>::FrictionalParameters &strength) const

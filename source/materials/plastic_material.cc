@@ -391,6 +391,25 @@ namespace MpmOtm
 
   template <int dim>
   typename PlasticMaterial<dim>::FrictionalParameters
+  PlasticMaterial<dim>::FrictionalParameters::reduced(const double factor) const
+  {
+    const auto angle = [factor](const double phi) {
+      return std::atan(std::tan(phi) / factor);
+    };
+    FrictionalParameters result     = *this;
+    result.friction_angle           = angle(friction_angle);
+    result.dilatancy_angle          = angle(dilatancy_angle);
+    result.cohesion                 = cohesion / factor;
+    result.residual_friction_angle  = angle(residual_friction_angle);
+    result.residual_dilatancy_angle = angle(residual_dilatancy_angle);
+    result.residual_cohesion        = residual_cohesion / factor;
+    return result;
+  }
+
+
+
+  template <int dim>
+  typename PlasticMaterial<dim>::FrictionalParameters
   PlasticMaterial<dim>::parse_frictional_parameters(
     ParameterHandler  &prm,
     const std::string &model) const

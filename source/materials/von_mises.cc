@@ -51,6 +51,16 @@ namespace MpmOtm
 
 
   template <int dim>
+  void
+  VonMises<dim>::reduce_strength(const double factor)
+  {
+    initial_yield_stress /= factor;
+    hardening /= factor;
+  }
+
+
+
+  template <int dim>
   double
   VonMises<dim>::yield_function(const SymmetricTensor<2, 3> &stress,
                                 const double plastic_strain) const

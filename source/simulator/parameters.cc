@@ -20,6 +20,7 @@
 #include <mpm_otm/problems/problem.h>
 #include <mpm_otm/shape_functions/shape_functions.h>
 #include <mpm_otm/simulator/simulator.h>
+#include <mpm_otm/simulator/strength_reduction.h>
 
 #include <cmath>
 #include <cstdlib>
@@ -226,6 +227,7 @@ namespace MpmOtm
     BoundaryConditions<dim>::declare_parameters(prm, names.boundaries);
     LocalDamping<dim>::declare_parameters(prm);
     QuasiStaticEnd<dim>::declare_parameters(prm);
+    StrengthReduction<dim>::declare_parameters(prm);
 
     PluginRegistry<Problem<dim>>::declare_parameters(prm);
     PluginRegistry<NodalUpdate<dim>>::declare_parameters(prm);

@@ -24,6 +24,7 @@
 #include <mpm_otm/io/monitoring_points.h>
 #include <mpm_otm/io/output_writer.h>
 #include <mpm_otm/material_points/material_points.h>
+#include <mpm_otm/material_points/property_layout.h>
 #include <mpm_otm/materials/material_library.h>
 #include <mpm_otm/problems/problem.h>
 #include <mpm_otm/shape_functions/shape_functions.h>
@@ -283,6 +284,41 @@ namespace MpmOtm
                       *points,
                       state,
                       communicator);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::reduce_strength(const double factor)
+  {
+    AssertThrow(factor > 0 && std::isfinite(factor), ExcInternalError());
+    materials->reduce_strength(factor);
+  }
+
+
+
+  template <int dim>
+  double
+  Simulator<dim>::largest_displacement() const
+  {
+    double largest = 0;
+    for (const auto &particle : points->particle_handler())
+      largest = std::max(largest,
+                         particle.get_location().distance(
+                           Point<dim>(PropertyLayout<dim>::get_vector(
+                             particle.get_properties(),
+                             PropertyLayout<dim>::initial_position))));
+    return Utilities::MPI::max(largest, communicator);
+  }
+
+
+
+  template <int dim>
+  bool
+  Simulator<dim>::ends_at_rest() const
+  {
+    return quasi_static_end->enabled();
   }
 
 

@@ -1,7 +1,9 @@
 // The entries of the elasto-plastic models: the cone coefficients of
-// Drucker-Prager and the defaults against hand computations, and the
+// Drucker-Prager and the defaults against hand computations, the
 // rejection by parse_parameters of inadmissible values with a message that
-// names the entry (here in a named material, "Material sand").
+// names the entry (here in a named material, "Material sand"), and the
+// strengths divided by a factor of a strength reduction
+// (Material::reduce_strength()).
 
 #include <mpm_otm/base/plugins.h>
 #include <mpm_otm/materials/drucker_prager.h>
@@ -230,4 +232,90 @@ main(int argc, char **argv)
   check_rejected("von Mises",
                  {{"Hardening modulus", "-1"}},
                  "Hardening modulus");
+
+  // Strength reduction by F = 2: c / F and tan / F of the friction and
+  // dilatancy angles, at the peak and the residual, for the frictional
+  // models; the yield stress and the hardening modulus / F for von Mises.
+  // Mohr-Coulomb c = 10, phi = 30 deg, psi = 10 deg softening to c = 4,
+  // phi = 20 deg, psi = 0 between eps_p = 0 and 0.1: reduced, c = 5,
+  // phi = atan(tan(30 deg) / 2) = 16.102 deg, and at the residual c = 2,
+  // phi = atan(tan(20 deg) / 2) = 10.311 deg. A trial stress far outside
+  // (principal -0, -50, -200) returns onto the reduced surface
+  // (sigma_1 - sigma_3) + (sigma_1 + sigma_3) sin(phi) = 2 c cos(phi), at
+  // the peak and (eps_p = 1) at the residual; the apex c cot(phi) and with
+  // it the tension cut-off stay at 10 sqrt(3).
+  {
+    const double F             = 2.;
+    const auto   reduced_angle = [F](const double degrees) {
+      return std::atan(std::tan(degrees * M_PI / 180.) / F);
+    };
+    const Entries entries{{"Friction angle", "30"},
+                          {"Dilatancy angle", "10"},
+                          {"Cohesion", "10"},
+                          {"Softening strains", "0, 0.1"},
+                          {"Residual cohesion", "4"},
+                          {"Residual friction angle", "20"},
+                          {"Residual dilatancy angle", "0"}};
+    auto          material = make_sand("Mohr-Coulomb", entries);
+    material->reduce_strength(F);
+    const auto &mc = dynamic_cast<const MohrCoulomb<3> &>(*material);
+    check(std::abs(mc.friction_angle() - reduced_angle(30.)) < 1e-15 &&
+            std::abs(mc.dilatancy_angle() - reduced_angle(10.)) < 1e-15 &&
+            std::abs(mc.cohesion() - 5.) < 1e-15 &&
+            std::abs(mc.tension_cut_off() - 10. * std::sqrt(3.)) < 1e-12,
+          "Mohr-Coulomb reduced by 2: phi, psi, c, cut-off");
+    double largest_error = 0;
+    for (const auto &[plastic_strain, c, phi] :
+         {std::tuple<double, double, double>{0., 5., reduced_angle(30.)},
+          {1., 2., reduced_angle(20.)}})
+      {
+        SymmetricTensor<2, 3> stress;
+        stress[1][1] = -50.;
+        stress[2][2] = -200.;
+        std::vector<double> variables{plastic_strain, 0.};
+        mc.return_map(stress, make_array_view(variables));
+        const auto   principal = eigenvalues(stress);
+        const double yield     = (principal[0] - principal[2]) +
+                             (principal[0] + principal[2]) * std::sin(phi) -
+                             2. * c * std::cos(phi);
+        largest_error = std::max(largest_error, std::abs(yield) / 200.);
+      }
+    check(largest_error < 1e-12,
+          "Mohr-Coulomb reduced by 2: returned off the reduced surface by " +
+            std::to_string(largest_error));
+    deallog << "Mohr-Coulomb reduced by 2: phi = "
+            << rounded(mc.friction_angle() * 180. / M_PI, 5)
+            << " deg, psi = " << rounded(mc.dilatancy_angle() * 180. / M_PI, 5)
+            << " deg, c = " << mc.cohesion()
+            << "; returns onto the reduced peak and residual surfaces"
+            << std::endl;
+
+    // Drucker-Prager reduced by 2: the cone of the reduced parameters.
+    auto dp_material = make_sand("Drucker-Prager", entries);
+    dp_material->reduce_strength(F);
+    const auto &dp = dynamic_cast<const DruckerPrager<3> &>(*dp_material);
+    const auto  direct_material = make_sand(
+      "Drucker-Prager",
+      {{"Friction angle", std::to_string(reduced_angle(30.) * 180. / M_PI)},
+        {"Dilatancy angle", std::to_string(reduced_angle(10.) * 180. / M_PI)},
+        {"Cohesion", "5"}});
+    const auto &direct =
+      dynamic_cast<const DruckerPrager<3> &>(*direct_material);
+    check(std::abs(dp.alpha() / direct.alpha() - 1.) < 1e-6 &&
+            std::abs(dp.alpha_psi() / direct.alpha_psi() - 1.) < 1e-6 &&
+            std::abs(dp.k() / direct.k() - 1.) < 1e-6,
+          "Drucker-Prager reduced by 2: not the cone of c / 2, atan(tan / 2)");
+    deallog << "Drucker-Prager reduced by 2: alpha = " << rounded(dp.alpha(), 6)
+            << ", k = " << rounded(dp.k(), 6) << std::endl;
+
+    auto vm_material =
+      make_sand("von Mises",
+                {{"Yield stress", "40"}, {"Hardening modulus", "10"}});
+    vm_material->reduce_strength(F);
+    const auto &vm = dynamic_cast<const VonMises<3> &>(*vm_material);
+    check(vm.yield_stress() == 20. && vm.hardening_modulus() == 5.,
+          "von Mises reduced by 2: yield stress, hardening modulus");
+    deallog << "von Mises reduced by 2: yield stress " << vm.yield_stress()
+            << ", hardening modulus " << vm.hardening_modulus() << std::endl;
+  }
 }

@@ -120,6 +120,15 @@ namespace MpmOtm
     is_plastic() const;
 
     /**
+     * Divide the strength of the model by @p factor (> 0), once, for a
+     * trial of a strength reduction (StrengthReduction): the plastic models
+     * override it (the manual's "Strength reduction" says how each does);
+     * the elastic models have no strength and ignore it.
+     */
+    virtual void
+    reduce_strength(const double factor);
+
+    /**
      * Whether the model keeps an initial stress: true for the models that
      * integrate a stress rate (hypo-elastic and the plastic ones), false for
      * those whose stress is a function of the deformation gradient alone

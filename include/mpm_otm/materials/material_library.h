@@ -125,6 +125,13 @@ namespace MpmOtm
     internal_variable_names() const;
 
     /**
+     * Divide the strength of every material by @p factor
+     * (Material::reduce_strength()).
+     */
+    void
+    reduce_strength(const double factor);
+
+    /**
      * The largest wave speed of all materials (for the CFL bound).
      */
     double

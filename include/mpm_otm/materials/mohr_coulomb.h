@@ -116,6 +116,14 @@ namespace MpmOtm
     void
     parse_parameters(ParameterHandler &prm) override;
 
+    /**
+     * Cohesion and tan(phi), tan(psi), peak and residual, divided by @p factor
+     * (FrictionalParameters::reduced()); the tension cut-off stays (the apex c
+     * cot(phi) does not move).
+     */
+    void
+    reduce_strength(const double factor) override;
+
     void
     return_map(SymmetricTensor<2, 3>   &stress,
                const ArrayView<double> &internal_variables) const override;

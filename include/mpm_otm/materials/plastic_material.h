@@ -159,6 +159,15 @@ namespace MpmOtm
        */
       FrictionalParameters
       at(const double plastic_strain) const;
+
+      /**
+       * The parameters with the strength divided by @p factor: the
+       * cohesions c / F, and the friction and dilatancy angles, peak and
+       * residual, atan(tan(angle) / F) (so the dilatancy stays at or below
+       * the friction, and the apex c cot(phi) where it was).
+       */
+      FrictionalParameters
+      reduced(const double factor) const;
     };
 
     /**

@@ -37,6 +37,13 @@ namespace MpmOtm
     void
     parse_parameters(ParameterHandler &prm) override;
 
+    /**
+     * The yield stress and the hardening modulus divided by @p factor (the
+     * undrained strength c_u / F of a Tresca-like clay).
+     */
+    void
+    reduce_strength(const double factor) override;
+
     void
     return_map(SymmetricTensor<2, 3>   &stress,
                const ArrayView<double> &internal_variables) const override;

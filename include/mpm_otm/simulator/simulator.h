@@ -118,6 +118,29 @@ namespace MpmOtm
           &observer = {});
 
     /**
+     * Divide the strength of every material by @p factor
+     * (Material::reduce_strength()): a trial of a strength reduction, after
+     * setup() (whose initial stresses, e.g. a geostatic K0, keep the
+     * unreduced strengths) and before run(). Once per run.
+     */
+    void
+    reduce_strength(const double factor);
+
+    /**
+     * The largest distance of a material point from its initial position,
+     * over all ranks (collective).
+     */
+    double
+    largest_displacement() const;
+
+    /**
+     * Whether the run ends when it comes to rest (subsection "Quasi-static
+     * end" on).
+     */
+    bool
+    ends_at_rest() const;
+
+    /**
      * The material points (for tests and post-processing).
      */
     const MaterialPoints<dim> &
