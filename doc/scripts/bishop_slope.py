@@ -22,6 +22,12 @@ rises steeply at the exit), and returns the smallest F and its circle.
 Usage:
   bishop_slope.py factor C PHI          smallest F for cohesion C (Pa)
   bishop_slope.py critical-cohesion PHI the cohesion with F = 1 (bisection)
+  bishop_slope.py layered C1 PHI1 C2 PHI2 Y
+                                        smallest F of a slope of two layers
+                                        of the same unit weight: C1, PHI1
+                                        above y = Y, C2, PHI2 below (each
+                                        slice takes the strength of the
+                                        layer its base lies in)
 Each prints the value and the critical circle (centre x, y and radius).
 """
 
@@ -64,15 +70,21 @@ def circles(step=0.5):
             np.array(radii))
 
 
-def factors(c, phi, search, slices=50):
-    """Bishop's F of each circle of @p search (inf where not admissible)."""
+def factors(c, phi, search, slices=50, layers=None):
+    """Bishop's F of each circle of @p search (inf where not admissible).
+    With @p layers = (c2, phi2, y), slices whose base lies below y take
+    c2 and phi2 instead."""
     entries, exits, centres, radii = search
-    tan_phi = np.tan(np.radians(phi))
     xc, yc, r = centres[:, 0:1], centres[:, 1:2], radii[:, None]
     width = ((exits - entries) / slices)[:, None]
     mid = entries[:, None] + (np.arange(slices)[None, :] + 0.5) * width
     root = np.sqrt(np.maximum(r ** 2 - (mid - xc) ** 2, 1e-12))
     base = yc - root
+    tan_phi = np.tan(np.radians(phi))
+    if layers is not None:
+        below = base < layers[2]
+        c = np.where(below, layers[0], c)
+        tan_phi = np.where(below, np.tan(np.radians(layers[1])), tan_phi)
     weight = GAMMA * np.maximum(surface(mid) - base, 0.) * width
     alpha = np.arctan((xc - mid) / root)
     driving = np.sum(weight * np.sin(alpha), axis=1)
@@ -87,8 +99,8 @@ def factors(c, phi, search, slices=50):
     return np.where(valid, F, np.inf)
 
 
-def smallest(c, phi, search):
-    F = factors(c, phi, search)
+def smallest(c, phi, search, layers=None):
+    F = factors(c, phi, search, layers=layers)
     k = int(np.argmin(F))
     return F[k], search[2][k], search[3][k]
 
@@ -98,6 +110,11 @@ def main():
     if sys.argv[1] == "factor":
         c, phi = float(sys.argv[2]), float(sys.argv[3])
         F, centre, radius = smallest(c, phi, search)
+        print("F = %.4f; critical circle: centre %.3f %.3f, radius %.3f"
+              % (F, centre[0], centre[1], radius))
+    elif sys.argv[1] == "layered":
+        c1, phi1, c2, phi2, y = (float(v) for v in sys.argv[2:7])
+        F, centre, radius = smallest(c1, phi1, search, layers=(c2, phi2, y))
         print("F = %.4f; critical circle: centre %.3f %.3f, radius %.3f"
               % (F, centre[0], centre[1], radius))
     else:

@@ -5,9 +5,9 @@
 #include <deal.II/fe/mapping_q.h>
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/grid_tools_cache.h>
+#include <deal.II/numerics/rtree.h>
 
 #include <mpm_otm/grid/gmsh_file.h>
-#include <mpm_otm/material_points/simplex_search.h>
 #include <mpm_otm/problems/mesh_groups.h>
 
 namespace MpmOtm
@@ -92,27 +92,38 @@ namespace MpmOtm
   types::material_id
   MeshGroups<dim>::group_at(const Point<dim> &point) const
   {
-    std::pair<typename Triangulation<dim>::active_cell_iterator, Point<dim>>
-      found;
     if constexpr (dim > 1)
       {
-        try
-          {
-            found =
-              simplex ?
-                find_simplex(*cache, point, hint) :
-                GridTools::find_active_cell_around_point(*cache, point, hint);
-          }
-        catch (const std::exception &)
-          {
-            return numbers::invalid_material_id;
-          }
+        const auto contains =
+          [&](const typename Triangulation<dim>::active_cell_iterator &cell) {
+            try
+              {
+                return cell->reference_cell().contains_point(
+                  mapping->transform_real_to_unit_cell(cell, point),
+                  1e-10);
+              }
+            catch (const ExceptionBase &)
+              {
+                return false;
+              }
+          };
+        if (hint.state() == IteratorState::valid && contains(hint))
+          return hint->material_id();
+        // The cells whose bounding box holds the point (the cache's R-tree):
+        // a point outside the mesh, such as the air above a slope that a
+        // geostatic stress integrates through, costs a query of the tree
+        // instead of a test of every cell.
+        namespace bgi = boost::geometry::index;
+        for (const auto &[box, cell] :
+             cache->get_cell_bounding_boxes_rtree() |
+               bgi::adaptors::queried(bgi::intersects(point)))
+          if (cell != hint && contains(cell))
+            {
+              hint = cell;
+              return cell->material_id();
+            }
       }
-    if (found.first.state() != IteratorState::valid ||
-        found.first == triangulation.end())
-      return numbers::invalid_material_id;
-    hint = found.first;
-    return found.first->material_id();
+    return numbers::invalid_material_id;
   }
 
 

@@ -155,7 +155,7 @@ namespace MpmOtm
                     "comes to rest, so the runs must be able to end at "
                     "rest."));
     }
-    prepare_directory(prm, directory, overwrite);
+    clear_directory(directory, overwrite);
 
     pcout << "Strength reduction: factors " << lower_factor << " to "
           << upper_factor << ", tolerance " << tolerance
@@ -166,7 +166,21 @@ namespace MpmOtm
     unsigned int number    = 0;
     std::string  mechanism;
     const auto   trial_and_report = [&](const double factor) {
-      const Trial trial = run_trial(prm, directory, ++number, factor);
+      // The first trial's set-up completes the checks of the input (files
+      // it reads, bodies on the grid) before the analysis writes anything.
+      ++number;
+      const Trial trial =
+        run_trial(prm, directory, number, factor, [&, number]() {
+          if (number == 1)
+            {
+              // The trial has read its own directory; the analysis' file
+              // names the analysis' directory.
+              prm.enter_subsection("Output");
+              prm.set("Directory", directory);
+              prm.leave_subsection();
+              start_files(prm, directory);
+            }
+        });
       if (trial.fails)
         {
           fails_at  = std::min(fails_at, factor);
@@ -235,10 +249,11 @@ namespace MpmOtm
 
   template <int dim>
   typename StrengthReduction<dim>::Trial
-  StrengthReduction<dim>::run_trial(ParameterHandler  &prm,
-                                    const std::string &directory,
-                                    const unsigned int number,
-                                    const double       factor)
+  StrengthReduction<dim>::run_trial(ParameterHandler            &prm,
+                                    const std::string           &directory,
+                                    const unsigned int           number,
+                                    const double                 factor,
+                                    const std::function<void()> &after_setup)
   {
     std::ostringstream name;
     name << directory << "/trial-" << std::setw(2) << std::setfill('0')
@@ -256,6 +271,8 @@ namespace MpmOtm
         Simulator<dim> simulator(communicator, log);
         simulator.parse_parameters(prm);
         simulator.setup(prm);
+        if (after_setup)
+          after_setup();
         simulator.reduce_strength(factor);
         simulator.run();
         trial.at_rest              = simulator.at_rest();
@@ -293,9 +310,8 @@ namespace MpmOtm
 
   template <int dim>
   void
-  StrengthReduction<dim>::prepare_directory(const ParameterHandler &prm,
-                                            const std::string      &directory,
-                                            const bool overwrite) const
+  StrengthReduction<dim>::clear_directory(const std::string &directory,
+                                          const bool         overwrite) const
   {
     namespace fs = std::filesystem;
     std::string problem;
@@ -307,7 +323,8 @@ namespace MpmOtm
         // leave beside its own.
         if (problem.empty() && fs::is_directory(directory, error))
           for (const auto &entry : fs::directory_iterator(directory, error))
-            if (entry.path().filename().string().rfind("trial-", 0) == 0)
+            if (problem.empty() &&
+                entry.path().filename().string().rfind("trial-", 0) == 0)
               {
                 fs::remove_all(entry.path(), error);
                 if (error)
@@ -315,19 +332,26 @@ namespace MpmOtm
                             entry.path().string() + ">: " + error.message() +
                             ".";
               }
-        if (problem.empty())
-          {
-            fs::create_directories(directory, error);
-            if (error)
-              problem = "Output/Directory: cannot create <" + directory +
-                        ">: " + error.message() + ".";
-          }
-        if (problem.empty())
-          problem = OutputDirectory::write_file_atomically(
-            directory + "/parameters.prm",
-            [&](std::ostream &out) {
-              prm.print_parameters(out, ParameterHandler::PRM);
-            });
+      }
+    problem = Utilities::MPI::broadcast(communicator, problem, 0);
+    AssertThrow(problem.empty(), ExcMessage(problem));
+  }
+
+
+
+  template <int dim>
+  void
+  StrengthReduction<dim>::start_files(const ParameterHandler &prm,
+                                      const std::string      &directory) const
+  {
+    std::string problem;
+    if (root)
+      {
+        problem = OutputDirectory::write_file_atomically(
+          directory + "/parameters.prm",
+          [&](std::ostream &out) {
+            prm.print_parameters(out, ParameterHandler::PRM);
+          });
         if (problem.empty())
           problem = OutputDirectory::write_file_atomically(
             directory + "/strength-reduction.csv",

@@ -34,8 +34,9 @@ namespace MpmOtm
    * the group a name or tag in a parameter file means. deal.II's reader gives
    * every cell its physical tag as material id; this class keeps a serial copy
    * of the file's mesh on every rank (the background grid may be distributed,
-   * and a body's geostatic stress asks for points anywhere above its own), with
-   * deal.II's search for quadrilaterals/hexahedra and find_simplex() for
+   * and a body's geostatic stress asks for points anywhere above its own),
+   * and finds a point's cell among those whose bounding box holds it
+   * (deal.II's R-tree of the cells), quadrilaterals/hexahedra or
    * triangles/tetrahedra.
    */
   template <int dim>

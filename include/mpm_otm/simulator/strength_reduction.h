@@ -5,6 +5,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 
+#include <functional>
 #include <ostream>
 #include <string>
 
@@ -86,24 +87,33 @@ namespace MpmOtm
 
     /**
      * Run trial number @p number with the strengths divided by @p factor;
-     * @p directory is the Output/Directory of the analysis.
+     * @p directory is the Output/Directory of the analysis. @p after_setup,
+     * if given, is called once the trial's run is set up (its input
+     * checked) and before it runs.
      */
     Trial
-    run_trial(ParameterHandler  &prm,
-              const std::string &directory,
-              const unsigned int number,
-              const double       factor);
+    run_trial(ParameterHandler            &prm,
+              const std::string           &directory,
+              const unsigned int           number,
+              const double                 factor,
+              const std::function<void()> &after_setup = {});
 
     /**
-     * Prepare @p directory for the analysis (refusing another run's output
-     * unless @p overwrite, removing the trials of an earlier analysis
-     * otherwise) and write its parameters.prm and the header of
-     * strength-reduction.csv; stops every rank on a problem.
+     * Prepare @p directory for the analysis without writing to it: refuse
+     * another run's output unless @p overwrite, and remove the trials of
+     * an earlier analysis otherwise. Stops every rank on a problem.
      */
     void
-    prepare_directory(const ParameterHandler &prm,
-                      const std::string      &directory,
-                      const bool              overwrite) const;
+    clear_directory(const std::string &directory, const bool overwrite) const;
+
+    /**
+     * Write the analysis' parameters.prm (@p prm) and the header of
+     * strength-reduction.csv in @p directory. Stops every rank on a
+     * problem.
+     */
+    void
+    start_files(const ParameterHandler &prm,
+                const std::string      &directory) const;
 
     /**
      * Append the row of @p trial (number @p number) to
