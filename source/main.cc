@@ -16,6 +16,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <regex>
 #include <sstream>
 #include <thread>
 #include <vector>
@@ -79,7 +80,8 @@ namespace
                {std::pair<std::string, std::string>{"Body", "Bodies"},
                 {"Material", "Materials"},
                 {"Boundary", "Boundaries"},
-                {"Surface load", "Surface loads"}})
+                {"Surface load", "Surface loads"},
+                {"Stage", "Stages"}})
             {
               const std::string marker =
                 "no such subsection to be entered: " + kind + " ";
@@ -95,6 +97,38 @@ namespace
                                 "> is not used: add " + name +
                                 " to the entry " + list + "."));
                 }
+            }
+          // An entry in a subsection "Stage NAME" that a stage cannot
+          // change: say what a stage can.
+          const std::regex undeclared(
+            "Line <([0-9]+)> of file <([^>]*)>: No entry with name <([^>]*)>");
+          std::smatch found;
+          if (std::regex_search(information, found, undeclared))
+            {
+              std::ifstream file(found[2].str());
+              std::string   line, subsection;
+              for (int number = 1; number < std::stoi(found[1].str()) &&
+                                   std::getline(file, line);
+                   ++number)
+                {
+                  const std::string code =
+                    dealii::Utilities::trim(line.substr(0, line.find('#')));
+                  if (code.rfind("subsection ", 0) == 0)
+                    subsection = dealii::Utilities::trim(code.substr(11));
+                  else if (code == "end")
+                    subsection.clear();
+                }
+              AssertThrow(subsection.rfind("Stage ", 0) != 0,
+                          dealii::ExcMessage(
+                            "Parameter file <" + found[2].str() + ">, line " +
+                            found[1].str() + ": " + subsection + "/" +
+                            found[3].str() +
+                            ": a stage cannot set this entry. A stage sets "
+                            "its End time, End at rest, Remove bodies, Add "
+                            "bodies, Reset displacements and Local damping "
+                            "coefficient; the grid, shape functions, method, "
+                            "materials and conditions are those of the whole "
+                            "run (manual, 'Stages')."));
             }
           throw;
         }
@@ -251,6 +285,7 @@ main(int argc, char *argv[])
           examples.bodies        = {"example"};
           examples.boundaries    = {"example"};
           examples.surface_loads = {"example"};
+          examples.stages        = {"example"};
           dealii::ParameterHandler prm;
           if (dimension == "1")
             MpmOtm::Simulator<1>::declare_parameters(prm, examples);

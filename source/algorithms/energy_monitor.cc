@@ -42,11 +42,13 @@ namespace MpmOtm
       {
         started        = true;
         initial_energy = energy;
+        work_at_start  = sums[2];
         energy_floor =
           1e-12 * 0.5 * sums[3] * reference_speed * reference_speed;
         return;
       }
-    const double supplied = initial_energy + sums[2];
+    const double work     = sums[2] - work_at_start;
+    const double supplied = initial_energy + work;
     const double bound    = (1. + growth_limit) * supplied;
     if (energy <= bound || energy <= energy_floor)
       return;
@@ -55,9 +57,20 @@ namespace MpmOtm
             << "energy of the points, " << energy << " J (kinetic " << sums[0]
             << " J), is above (1 + Time/Energy growth limit = " << growth_limit
             << ") x the energy supplied, " << supplied << " J ("
-            << initial_energy << " J at the start, " << sums[2]
+            << initial_energy << " J at the start"
+            << (stage_started ? " of the stage, " : ", ") << work
             << " J of work by loads and prescribed velocities). " << advice();
     AssertThrow(false, ExcMessage(message.str()));
+  }
+
+
+
+  template <int dim>
+  void
+  EnergyMonitor<dim>::restart()
+  {
+    started       = false;
+    stage_started = true;
   }
 
 
@@ -80,7 +93,11 @@ namespace MpmOtm
   EnergyMonitor<dim>::save(CheckpointState &state) const
   {
     state.set_shared("energy monitor/reference",
-                     {started ? 1. : 0., initial_energy, energy_floor});
+                     {started ? 1. : 0.,
+                      initial_energy,
+                      energy_floor,
+                      work_at_start,
+                      stage_started ? 1. : 0.});
   }
 
 
@@ -90,11 +107,13 @@ namespace MpmOtm
   EnergyMonitor<dim>::load(const CheckpointState &state)
   {
     const auto &saved = state.shared("energy monitor/reference");
-    AssertThrow(saved.size() == 3,
+    AssertThrow(saved.size() == 5,
                 ExcMessage("The checkpoint's energy reference is damaged."));
     started        = saved[0] != 0.;
     initial_energy = saved[1];
     energy_floor   = saved[2];
+    work_at_start  = saved[3];
+    stage_started  = saved[4] != 0.;
   }
 
 

@@ -62,11 +62,24 @@ namespace MpmOtm
   {
     const double energy    = system.kinetic_energy();
     largest_kinetic_energy = std::max(largest_kinetic_energy, energy);
-    work                   = supplied_work;
+    work                   = supplied_work - work_at_start;
     history.emplace_back(time, energy);
     const double reference = std::max(largest_kinetic_energy, work);
     checks_at_rest = (energy <= tolerance * reference) ? checks_at_rest + 1 : 0;
     return at_rest();
+  }
+
+
+
+  template <int dim>
+  void
+  QuasiStaticEnd<dim>::restart(const double supplied_work)
+  {
+    checks_at_rest         = 0;
+    largest_kinetic_energy = 0;
+    work                   = 0;
+    work_at_start          = supplied_work;
+    history.clear();
   }
 
 
@@ -106,7 +119,7 @@ namespace MpmOtm
     text << "not at rest at t = " << time
          << ": the kinetic energy of the grid's motion is " << energy << " J, "
          << ratio << " x its reference " << reference
-         << " J (the largest in the run, or the work of the loads)";
+         << " J (the largest so far, or the work of the loads)";
     if (earlier_time < time)
       {
         text << "; since t = " << earlier_time << " it ";
@@ -130,7 +143,8 @@ namespace MpmOtm
   {
     std::vector<double> values = {double(checks_at_rest),
                                   largest_kinetic_energy,
-                                  work};
+                                  work,
+                                  work_at_start};
     for (const auto &[time, energy] : history)
       values.insert(values.end(), {time, energy});
     state.set_shared("quasi-static end", values);
@@ -146,8 +160,9 @@ namespace MpmOtm
     checks_at_rest         = static_cast<unsigned int>(values.at(0));
     largest_kinetic_energy = values.at(1);
     work                   = values.at(2);
+    work_at_start          = values.at(3);
     history.clear();
-    for (std::size_t k = 3; k + 1 < values.size(); k += 2)
+    for (std::size_t k = 4; k + 1 < values.size(); k += 2)
       history.emplace_back(values[k], values[k + 1]);
   }
 

@@ -43,6 +43,14 @@ namespace MpmOtm
                       "pressure or a traction on a segment in 2D, an "
                       "axis-parallel rectangle in 3D), each defined in a "
                       "subsection 'Surface load <name>'.");
+    prm.declare_entry("Stages",
+                      "",
+                      Patterns::List(Patterns::Anything()),
+                      "Names of the stages of a staged analysis, in the "
+                      "order they run, each defined in a subsection "
+                      "'Stage <name>' (its end, the bodies it removes or "
+                      "adds, ...; manual, 'Stages'). Empty: one stage, "
+                      "from t = 0 to Time/End time.");
   }
 
 
@@ -88,6 +96,7 @@ namespace MpmOtm
     result.bodies        = names_in(prm, "Bodies");
     result.boundaries    = names_in(prm, "Boundaries");
     result.surface_loads = names_in(prm, "Surface loads");
+    result.stages        = names_in(prm, "Stages");
 
     // The subsections the text opens, as "<kind> <name>" (comments and
     // surplus spaces removed). A file that includes others may define them
@@ -121,7 +130,8 @@ namespace MpmOtm
           std::make_tuple("Boundary", "Boundaries", &result.boundaries),
           std::make_tuple("Surface load",
                           "Surface loads",
-                          &result.surface_loads)})
+                          &result.surface_loads),
+          std::make_tuple("Stage", "Stages", &result.stages)})
       for (const auto &name : *names)
         AssertThrow(std::find(opened.begin(),
                               opened.end(),

@@ -55,6 +55,16 @@ namespace MpmOtm
 
   template <int dim>
   void
+  LocalDamping<dim>::set_coefficient(const double alpha)
+  {
+    AssertThrow(alpha >= 0. && alpha < 1., ExcInternalError());
+    coefficient = alpha;
+  }
+
+
+
+  template <int dim>
+  void
   LocalDamping<dim>::apply(NodalSystem<dim> &system) const
   {
     for (unsigned int i = 0; i < system.lumped_mass.locally_owned_size(); ++i)

@@ -94,12 +94,13 @@ namespace MpmOtm
     }
 
     /// Whether the entry @p name may differ between a run and its resumed
-    /// continuation: it does not change the result.
+    /// continuation: it does not change the result (@p end_entry: the end
+    /// time of the run, which may be extended).
     bool
-    may_change_on_resume(const std::string &name)
+    may_change_on_resume(const std::string &name, const std::string &end_entry)
     {
       return name.rfind("Output/", 0) == 0 ||
-             name.rfind("Checkpoint/", 0) == 0 || name == "Time/End time";
+             name.rfind("Checkpoint/", 0) == 0 || name == end_entry;
     }
 
     std::string
@@ -132,15 +133,17 @@ namespace MpmOtm
   Checkpoint<dim>::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Checkpoint");
-    prm.declare_entry("Interval",
-                      "0",
-                      Patterns::Integer(0),
-                      "Write a checkpoint every this many time steps (0: "
-                      "none), into checkpoint-NNNNN in Output/Directory. "
-                      "mpm-otm --resume DIRECTORY continues the run from the "
-                      "newest one, on any number of MPI ranks; its "
-                      "parameters.prm may then differ from the run's only in "
-                      "Time/End time and the Output and Checkpoint entries.");
+    prm.declare_entry(
+      "Interval",
+      "0",
+      Patterns::Integer(0),
+      "Write a checkpoint every this many time steps (0: "
+      "none), into checkpoint-NNNNN in Output/Directory. "
+      "mpm-otm --resume DIRECTORY continues the run from the "
+      "newest one, on any number of MPI ranks; its "
+      "parameters.prm may then differ from the run's only in "
+      "Time/End time (with Stages: the last stage's End time) and "
+      "the Output and Checkpoint entries.");
     prm.declare_entry("Wall-clock interval",
                       "0",
                       Patterns::Double(0),
@@ -171,6 +174,16 @@ namespace MpmOtm
     prm.enter_subsection("Time");
     end_time = prm.get_double("End time");
     prm.leave_subsection();
+  }
+
+
+
+  template <int dim>
+  void
+  Checkpoint<dim>::set_end_time(const std::string &entry, const double time)
+  {
+    end_entry = entry;
+    end_time  = time;
   }
 
 
@@ -437,7 +450,8 @@ namespace MpmOtm
             const std::string value_before = before == saved_parameters.end() ?
                                                "(none)" :
                                                "<" + before->second + ">";
-            if (value_now != value_before && !may_change_on_resume(name))
+            if (value_now != value_before &&
+                !may_change_on_resume(name, end_entry))
               differences.push_back(name + " = " + value_now +
                                     " (the run that wrote it: " + value_before +
                                     ")");
@@ -452,8 +466,9 @@ namespace MpmOtm
               problem +=
                 "; and " + std::to_string(differences.size() - 10) + " more";
             problem +=
-              ". A resumed run continues the run it was started as: only "
-              "Time/End time (to a time after the checkpoint's) and the "
+              ". A resumed run continues the run it was started as: only " +
+              end_entry +
+              " (to a time after the checkpoint's) and the "
               "entries of the subsections Output and Checkpoint may change. "
               "Restore the entries, or start a new run with them. ";
           }
@@ -463,7 +478,7 @@ namespace MpmOtm
                     "differ: a changed Mesh/Mesh file?). Restore the grid or "
                     "start a new run on it. ";
         else if (!(end_time > time))
-          problem = "Time/End time = " + parameters.at("Time/End time") +
+          problem = end_entry + " = " + parameters.at(end_entry) +
                     " is not after the checkpoint's time " +
                     std::to_string(time) + ". ";
       }

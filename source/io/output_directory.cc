@@ -128,6 +128,7 @@ namespace MpmOtm
       std::vector<std::string> found;
       for (const std::string name : {"statistics.csv",
                                      "monitoring.csv",
+                                     "stages.csv",
                                      "parameters.prm",
                                      "particles.pvd",
                                      "grid.pvd",
@@ -150,12 +151,14 @@ namespace MpmOtm
                  "newest checkpoint (mpm-otm --resume " +
                  directory + ").";
         }
-      // The step files and the monitoring table of the earlier run, which a
-      // shorter run or one without monitoring would leave beside its own.
+      // The step files and the monitoring and stage tables of the earlier
+      // run, which a shorter run or one without monitoring or stages would
+      // leave beside its own.
       std::vector<std::pair<fs::path, long>> files;
       std::string problem = list_step_files(directory, files);
-      if (problem.empty())
-        problem = remove_path(directory + "/monitoring.csv");
+      for (const std::string table : {"monitoring.csv", "stages.csv"})
+        if (problem.empty())
+          problem = remove_path(directory + "/" + table);
       for (unsigned int k = 0; k < files.size() && problem.empty(); ++k)
         problem = remove_path(files[k].first);
       return problem.empty() ? "" : "Output/Overwrite: " + problem;
@@ -198,10 +201,11 @@ namespace MpmOtm
 
       // The header and the rows up to the step of each table; a last row
       // without its end of line was cut off by the interruption.
-      for (const std::string table : {"statistics.csv", "monitoring.csv"})
+      for (const std::string table :
+           {"statistics.csv", "monitoring.csv", "stages.csv"})
         {
           const std::string name = directory + "/" + table;
-          if (table == "monitoring.csv" && !fs::exists(name))
+          if (table != "statistics.csv" && !fs::exists(name))
             continue;
           std::ifstream in(name);
           if (!in)

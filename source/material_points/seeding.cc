@@ -130,7 +130,6 @@ namespace MpmOtm
                             const SeedingBodies<dim>  &bodies)
   {
     grid = &background;
-    check_memory(bodies);
     particles =
       std::make_unique<Particles::ParticleHandler<dim>>(grid->triangulation(),
                                                         grid->mapping(),
@@ -144,7 +143,64 @@ namespace MpmOtm
       cache =
         std::make_unique<GridTools::Cache<dim, dim>>(grid->triangulation(),
                                                      grid->mapping());
+    insert_pattern(bodies);
+    if (!grid->is_box())
+      return;
 
+    // Every traction boundary must lie on a block boundary and have received
+    // boundary points.
+    const Point<dim> lower  = grid->box().get_boundary_points().first;
+    const auto      &blocks = grid->subdivisions();
+    for (const auto id : bodies.traction_boundaries())
+      {
+        const BoundingBox<dim> region = bodies.material_region();
+        const unsigned int     d      = id / 2;
+        const double           face   = (id % 2 == 0) ?
+                                          region.get_boundary_points().first[d] :
+                                          region.get_boundary_points().second[d];
+        const double           blocks_to_face =
+          (face - lower[d]) / (grid->box().side_length(d) / blocks[d]);
+        AssertThrow(
+          std::abs(blocks_to_face - std::round(blocks_to_face)) < 1e-8,
+          ExcMessage("The material region's side carrying traction boundary " +
+                     std::to_string(id) +
+                     " must lie on a block boundary of the grid (see "
+                     "Mesh/Subdivisions)."));
+        unsigned int n = 0;
+        for (const auto &particle : *particles)
+          {
+            const auto properties = particle.get_properties();
+            if (properties[PropertyLayout<dim>::traction_measure] > 0. &&
+                properties[PropertyLayout<dim>::traction_boundary] == id)
+              ++n;
+          }
+        AssertThrow(Utilities::MPI::sum(n, communicator()) > 0,
+                    ExcMessage(
+                      "No material point lies next to traction boundary " +
+                      std::to_string(id) +
+                      ": the material region must end on a block boundary "
+                      "of the grid on that side (check the problem's "
+                      "material region and Mesh/Subdivisions)."));
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  MaterialPoints<dim>::add(const SeedingBodies<dim> &bodies)
+  {
+    Assert(particles, ExcMessage("add() needs seed() first."));
+    insert_pattern(bodies);
+  }
+
+
+
+  template <int dim>
+  void
+  MaterialPoints<dim>::insert_pattern(const SeedingBodies<dim> &bodies)
+  {
+    check_memory(bodies);
     points_per_body.assign(bodies.n_bodies(), 0);
     points_outside_bodies = 0;
     if (!grid->is_box())
@@ -229,40 +285,6 @@ namespace MpmOtm
     points_outside_bodies =
       Utilities::MPI::sum(points_outside_bodies, communicator());
     check_every_body_has_points(bodies);
-
-    // Every traction boundary must lie on a block boundary and have received
-    // boundary points.
-    for (const auto id : bodies.traction_boundaries())
-      {
-        const BoundingBox<dim> region = bodies.material_region();
-        const unsigned int     d      = id / 2;
-        const double           face   = (id % 2 == 0) ?
-                                          region.get_boundary_points().first[d] :
-                                          region.get_boundary_points().second[d];
-        const double           blocks_to_face =
-          (face - lower[d]) / (grid->box().side_length(d) / blocks[d]);
-        AssertThrow(
-          std::abs(blocks_to_face - std::round(blocks_to_face)) < 1e-8,
-          ExcMessage("The material region's side carrying traction boundary " +
-                     std::to_string(id) +
-                     " must lie on a block boundary of the grid (see "
-                     "Mesh/Subdivisions)."));
-        unsigned int n = 0;
-        for (const auto &particle : *particles)
-          {
-            const auto properties = particle.get_properties();
-            if (properties[PropertyLayout<dim>::traction_measure] > 0. &&
-                properties[PropertyLayout<dim>::traction_boundary] == id)
-              ++n;
-          }
-        AssertThrow(Utilities::MPI::sum(n, communicator()) > 0,
-                    ExcMessage(
-                      "No material point lies next to traction boundary " +
-                      std::to_string(id) +
-                      ": the material region must end on a block boundary "
-                      "of the grid on that side (check the problem's "
-                      "material region and Mesh/Subdivisions)."));
-      }
   }
 
 
@@ -602,4 +624,10 @@ namespace MpmOtm
   MaterialPoints<2>::seed(const BackgroundGrid<2> &, const SeedingBodies<2> &);
   template void
   MaterialPoints<3>::seed(const BackgroundGrid<3> &, const SeedingBodies<3> &);
+  template void
+  MaterialPoints<1>::add(const SeedingBodies<1> &);
+  template void
+  MaterialPoints<2>::add(const SeedingBodies<2> &);
+  template void
+  MaterialPoints<3>::add(const SeedingBodies<3> &);
 } // namespace MpmOtm

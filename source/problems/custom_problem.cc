@@ -264,7 +264,8 @@ namespace MpmOtm
       return Problem<dim>::body_containing(X);
     unsigned int found = numbers::invalid_unsigned_int;
     for (unsigned int b = 0; b < bodies.size(); ++b)
-      if (bodies[b].contains(X))
+      if ((b >= present_bodies.size() || present_bodies[b]) &&
+          bodies[b].contains(X))
         {
           AssertThrow(
             found == numbers::invalid_unsigned_int,
@@ -353,6 +354,15 @@ namespace MpmOtm
       sigma[d][d] = K0 * sigma_v;
     sigma[dim - 1][dim - 1] = sigma_v;
     return {sigma, K0 * sigma_v};
+  }
+
+
+
+  template <int dim>
+  void
+  CustomProblem<dim>::set_present_bodies(const std::vector<bool> &present)
+  {
+    present_bodies = present;
   }
 
 

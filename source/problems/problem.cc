@@ -135,6 +135,13 @@ namespace MpmOtm
   }
 
   template <int dim>
+  void
+  Problem<dim>::set_present_bodies(const std::vector<bool> &)
+  {}
+
+
+
+  template <int dim>
   bool
   Problem<dim>::runs_on_any_grid() const
   {

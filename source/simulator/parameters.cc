@@ -20,6 +20,7 @@
 #include <mpm_otm/problems/problem.h>
 #include <mpm_otm/shape_functions/shape_functions.h>
 #include <mpm_otm/simulator/simulator.h>
+#include <mpm_otm/simulator/stage_plan.h>
 #include <mpm_otm/simulator/strength_reduction.h>
 
 #include <cmath>
@@ -227,6 +228,7 @@ namespace MpmOtm
     BoundaryConditions<dim>::declare_parameters(prm, names.boundaries);
     LocalDamping<dim>::declare_parameters(prm);
     QuasiStaticEnd<dim>::declare_parameters(prm);
+    StagePlan<dim>::declare_parameters(prm, names.stages);
     StrengthReduction<dim>::declare_parameters(prm);
 
     PluginRegistry<Problem<dim>>::declare_parameters(prm);
@@ -354,6 +356,13 @@ namespace MpmOtm
     damping->parse_parameters(prm);
     quasi_static_end = std::make_unique<QuasiStaticEnd<dim>>();
     quasi_static_end->parse_parameters(prm);
+    stage_plan = std::make_unique<StagePlan<dim>>();
+    stage_plan->parse_parameters(prm,
+                                 method->fixed_grid(),
+                                 quasi_static_end->enabled());
+    stage_plan->reserve_point_variables(*materials);
+    end_time = stage_plan->stages().back().end_time;
+    checkpoint->set_end_time(stage_plan->end_time_entry(), end_time);
   }
 
 

@@ -17,13 +17,14 @@
 #include <mpm_otm/grid_system/nodal_system.h>
 #include <mpm_otm/io/checkpoint.h>
 #include <mpm_otm/io/monitoring_points.h>
+#include <mpm_otm/io/output_directory.h>
 #include <mpm_otm/io/output_writer.h>
 #include <mpm_otm/material_points/material_points.h>
 #include <mpm_otm/materials/material_library.h>
-#include <mpm_otm/problems/body_seeder.h>
 #include <mpm_otm/problems/problem.h>
 #include <mpm_otm/shape_functions/shape_functions.h>
 #include <mpm_otm/simulator/simulator.h>
+#include <mpm_otm/simulator/stage_plan.h>
 
 #include <algorithm>
 #include <cmath>
@@ -73,7 +74,7 @@ namespace MpmOtm
           }
       }
     Activity::set("seeding the material points (Particles per cell)");
-    points->seed(*grid, BodySeeder<dim>(*problem_description, *materials));
+    stage_plan->seed(*points, *grid, *problem_description, *materials);
     problem_description->surface_loads().assign_points(*points);
     if (grid_motion->moves_vertices() && !grid->is_box())
       {
@@ -294,6 +295,21 @@ namespace MpmOtm
       output->write_basis_picture(*shape_functions);
     if (monitoring->enabled())
       monitoring->write_header(output->directory(), resume, communicator);
+    if (stage_plan->staged() && !resume)
+      {
+        std::string problem;
+        if (Utilities::MPI::this_mpi_process(communicator) == 0)
+          problem = OutputDirectory::write_file_atomically(
+            output->directory() + "/stages.csv",
+            [](std::ostream &out) {
+              out << "step,stage,name,first_step,start_time,end_time,end\n";
+            });
+        stop_if_any_rank_failed(communicator,
+                                problem,
+                                "",
+                                "Free space on the disk of Output/Directory "
+                                "or choose another one.");
+      }
 
     pcout << "mpm-otm: " << dim << "D, "
           << grid->triangulation().n_global_active_cells() << " cells, "

@@ -22,6 +22,7 @@
 #include <mpm_otm/grid_system/nodal_system.h>
 #include <mpm_otm/io/checkpoint.h>
 #include <mpm_otm/io/monitoring_points.h>
+#include <mpm_otm/io/output_directory.h>
 #include <mpm_otm/io/output_writer.h>
 #include <mpm_otm/material_points/material_points.h>
 #include <mpm_otm/material_points/property_layout.h>
@@ -29,6 +30,7 @@
 #include <mpm_otm/problems/problem.h>
 #include <mpm_otm/shape_functions/shape_functions.h>
 #include <mpm_otm/simulator/simulator.h>
+#include <mpm_otm/simulator/stage_plan.h>
 
 #include <cmath>
 #include <iomanip>
@@ -79,9 +81,14 @@ namespace MpmOtm
                                *particle_transfer,
                                timer);
 
-      const unsigned int n_steps =
-        static_cast<unsigned int>(std::ceil(end_time / time_step - 1e-8));
-      Timer wall_clock(communicator, true);
+      const auto &stages = stage_plan->stages();
+      // The stage that runs, its first step and start time, and the step at
+      // which it ends at the latest.
+      unsigned int stage_number     = 0;
+      unsigned int stage_first_step = 1;
+      double       stage_start_time = 0;
+      unsigned int last_step        = 0;
+      Timer        wall_clock(communicator, true);
 
       // An output that only a signal asks for does not start a new window
       // of the averaged reactions (see reactions_and_displacements()).
@@ -112,16 +119,16 @@ namespace MpmOtm
                       *system,
                       statistics);
         const double elapsed = wall_clock.wall_time();
-        pcout << "step " << std::setw(7) << step << " of " << n_steps
+        pcout << "step " << std::setw(7) << step << " of " << last_step
               << "  t = " << std::scientific << std::setprecision(4)
               << current_time
               << "  kinetic energy = " << statistics.kinetic_energy
               << "  wall time = " << std::fixed << std::setprecision(2)
               << elapsed << " s";
-        if (step > resumed_step && step < n_steps)
+        if (step > resumed_step && step < last_step)
           {
             const double remaining =
-              elapsed * (n_steps - step) / (step - resumed_step);
+              elapsed * (last_step - step) / (step - resumed_step);
             pcout << ", about " << std::setprecision(remaining < 10. ? 1 : 0)
                   << remaining << " s to go";
           }
@@ -150,97 +157,199 @@ namespace MpmOtm
       // already interrupt.
       const StopSignal stop_signal;
       std::string      signal;
+      // Whether the run continues inside the stage it was interrupted in.
+      bool resumed_inside_stage = false;
       if (resumed_state)
         {
           stepper.load(*resumed_state);
           energy_monitor.load(*resumed_state);
           quasi_static_end->load(*resumed_state);
+          const auto &stage = resumed_state->shared("simulator/stage");
+          AssertThrow(stage.size() == 3 && stage[0] < stages.size(),
+                      ExcMessage("The checkpoint's stage is damaged or not "
+                                 "one of this run's Stages."));
+          stage_number     = static_cast<unsigned int>(stage[0]);
+          stage_first_step = static_cast<unsigned int>(stage[1]);
+          stage_start_time = stage[2];
+          stage_plan->restore_damping(stage_number, *damping);
           resumed_state.reset();
+          resumed_inside_stage = true;
         }
-      else
-        {
-          energy_monitor.check(*points, *materials, stepper.supplied_work());
-          report(0, true);
-          monitor(0);
-        }
-      unsigned int at_rest_step = numbers::invalid_unsigned_int;
+      unsigned int step = resumed_step;
       Activity::set("the time steps");
-      for (unsigned int step = resumed_step + 1; step <= n_steps; ++step)
+      for (; stage_number < stages.size() && stop_message.empty();
+           ++stage_number)
         {
-          const double dt = std::min(time_step, end_time - current_time);
-          const bool   output_step = output->is_output_step(step,
-                                                          current_time,
-                                                          current_time + dt,
-                                                          step == n_steps);
-          try
+          const auto &stage      = stages[stage_number];
+          const bool  last_stage = (stage_number + 1 == stages.size());
+          if (!resumed_inside_stage)
             {
-              stepper.advance(current_time, dt);
-              if (step % 10 == 0 || output_step)
+              stage_first_step = step + 1;
+              stage_start_time = current_time;
+              if (stage_plan->staged())
+                try
+                  {
+                    TimerOutput::Scope scope(timer, "stages");
+                    std::string        changes =
+                      stage_plan->begin(stage_number,
+                                        *points,
+                                        *problem_description,
+                                        *materials,
+                                        *damping);
+                    if (last_stage && pending_strength_factor != 1.)
+                      {
+                        materials->reduce_strength(pending_strength_factor);
+                        changes +=
+                          "; strengths divided by " +
+                          Utilities::to_string(pending_strength_factor);
+                      }
+                    pcout << "Stage " << stage.name << " begins at step "
+                          << stage_first_step << ", t = " << current_time
+                          << ": " << changes << '.' << std::endl;
+                    if (!stage.added_bodies.empty())
+                      check_time_step_after_adding(stage.name);
+                    if (stage_number > 0)
+                      energy_monitor.restart();
+                    quasi_static_end->restart(
+                      Utilities::MPI::sum(stepper.supplied_work(),
+                                          communicator));
+                  }
+                catch (const std::exception &error)
+                  {
+                    stop_message =
+                      "Stopped at the start of stage " + stage.name +
+                      " (t = " + Utilities::to_string(current_time) +
+                      "); the output up to the last output step "
+                      "is in <" +
+                      output->directory() + ">. " + message_of(error);
+                    timer.disable_output();
+                    break;
+                  }
+              if (stage_number == 0)
                 {
                   energy_monitor.check(*points,
                                        *materials,
                                        stepper.supplied_work());
-                  signal = stop_signal.received(communicator);
-                  if (quasi_static_end->enabled() &&
-                      quasi_static_end->check(
-                        *system,
-                        current_time + dt,
-                        Utilities::MPI::sum(stepper.supplied_work(),
-                                            communicator)))
-                    at_rest_step = step;
+                  report(0, true);
+                  monitor(0);
+                }
+              else
+                energy_monitor.check(*points,
+                                     *materials,
+                                     stepper.supplied_work());
+            }
+          resumed_inside_stage = false;
+          last_step =
+            step + static_cast<unsigned int>(std::ceil(
+                     (stage.end_time - current_time) / time_step - 1e-8));
+          bool at_rest = false;
+          for (++step; step <= last_step; ++step)
+            {
+              const double dt =
+                std::min(time_step, stage.end_time - current_time);
+              const bool output_step =
+                output->is_output_step(step,
+                                       current_time,
+                                       current_time + dt,
+                                       step == last_step);
+              try
+                {
+                  stepper.advance(current_time, dt);
+                  if (step % 10 == 0 || output_step)
+                    {
+                      energy_monitor.check(*points,
+                                           *materials,
+                                           stepper.supplied_work());
+                      signal = stop_signal.received(communicator);
+                      if (stage.end_at_rest &&
+                          quasi_static_end->check(
+                            *system,
+                            current_time + dt,
+                            Utilities::MPI::sum(stepper.supplied_work(),
+                                                communicator)))
+                        at_rest = true;
+                    }
+                }
+              catch (const std::exception &error)
+                {
+                  std::ostringstream message;
+                  message << "Stopped in time step " << step
+                          << " (t = " << current_time << " to "
+                          << current_time + dt
+                          << "); the output up to the last output step is "
+                             "in <"
+                          << output->directory() << ">. " << message_of(error);
+                  stop_message = message.str();
+                  timer.disable_output();
+                  break;
+                }
+              current_time =
+                (step == last_step) ? stage.end_time : current_time + dt;
+              const bool run_ends =
+                last_stage && (step == last_step || at_rest);
+              if (output_step || !signal.empty() || at_rest)
+                report(step, output_step || at_rest);
+              if (monitoring->is_due(step,
+                                     output_step,
+                                     step == last_step || at_rest ||
+                                       !signal.empty()))
+                monitor(step);
+              if (at_rest || step == last_step)
+                {
+                  if (stage_plan->staged())
+                    record_stage(stage_number,
+                                 stage_first_step,
+                                 stage_start_time,
+                                 step,
+                                 at_rest ? "at rest" : "end time");
+                  if (at_rest)
+                    pcout << "Quasi-static end: " << quasi_static_end->summary()
+                          << (run_ends ?
+                                "; the run ends here." :
+                                "; stage " + stage.name + " ends here.")
+                          << std::endl;
+                  else if (stage.end_at_rest)
+                    pcout << "Quasi-static end"
+                          << (stage_plan->staged() ? " of stage " + stage.name :
+                                                     std::string())
+                          << ": " << quasi_static_end->summary() << '.'
+                          << std::endl;
+                  if (at_rest || run_ends)
+                    break;
+                }
+              if (!run_ends &&
+                  (!signal.empty() || checkpoint->is_due(step, communicator)))
+                {
+                  TimerOutput::Scope scope(timer, "checkpoint");
+                  write_checkpoint(step,
+                                   stepper,
+                                   energy_monitor,
+                                   {double(stage_number),
+                                    double(stage_first_step),
+                                    stage_start_time});
+                }
+              if (!signal.empty() && !run_ends)
+                {
+                  std::ostringstream message;
+                  message
+                    << "Stopped by " << signal << " after time step " << step
+                    << " (t = " << current_time
+                    << "); the output of this step and of the output steps "
+                    << "before it and a checkpoint of this step are in <"
+                    << output->directory()
+                    << ">. Continue the run with: mpm-otm --resume "
+                    << output->directory();
+                  stop_message = message.str();
+                  stopped_by   = signal;
+                  timer.disable_output();
+                  break;
                 }
             }
-          catch (const std::exception &error)
-            {
-              std::ostringstream message;
-              message << "Stopped in time step " << step
-                      << " (t = " << current_time << " to " << current_time + dt
-                      << "); the output up to the last output step is in <"
-                      << output->directory() << ">. " << message_of(error);
-              stop_message = message.str();
-              timer.disable_output();
-              break;
-            }
-          current_time = (step == n_steps) ? end_time : current_time + dt;
-          if (output_step || !signal.empty() || at_rest_step == step)
-            report(step, output_step || at_rest_step == step);
-          if (monitoring->is_due(step,
-                                 output_step,
-                                 step == n_steps || at_rest_step == step ||
-                                   !signal.empty()))
-            monitor(step);
-          if (at_rest_step == step)
-            {
-              pcout << "Quasi-static end: " << quasi_static_end->summary()
-                    << "; the run ends here." << std::endl;
-              break;
-            }
-          if (step < n_steps &&
-              (!signal.empty() || checkpoint->is_due(step, communicator)))
-            {
-              TimerOutput::Scope scope(timer, "checkpoint");
-              write_checkpoint(step, stepper, energy_monitor);
-            }
-          if (!signal.empty() && step < n_steps)
-            {
-              std::ostringstream message;
-              message << "Stopped by " << signal << " after time step " << step
-                      << " (t = " << current_time
-                      << "); the output of this step and of the output steps "
-                      << "before it and a checkpoint of this step are in <"
-                      << output->directory()
-                      << ">. Continue the run with: mpm-otm --resume "
-                      << output->directory();
-              stop_message = message.str();
-              stopped_by   = signal;
-              timer.disable_output();
-              break;
-            }
+          // The loop's increment would count the step that ended the stage
+          // twice.
+          if (step > last_step)
+            step = last_step;
         }
-      if (quasi_static_end->enabled() && stop_message.empty() &&
-          stopped_by.empty() && at_rest_step == numbers::invalid_unsigned_int)
-        pcout << "Quasi-static end: " << quasi_static_end->summary() << '.'
-              << std::endl;
     }
     if (!stopped_by.empty())
       throw StoppedBySignal(stop_message, stopped_by);
@@ -264,12 +373,14 @@ namespace MpmOtm
 
   template <int dim>
   void
-  Simulator<dim>::write_checkpoint(const unsigned int        step,
-                                   const TimeStepper<dim>   &stepper,
-                                   const EnergyMonitor<dim> &energy_monitor)
+  Simulator<dim>::write_checkpoint(const unsigned int         step,
+                                   const TimeStepper<dim>    &stepper,
+                                   const EnergyMonitor<dim>  &energy_monitor,
+                                   const std::vector<double> &stage)
   {
     CheckpointState state;
     state.set_shared("simulator/time step", {time_step});
+    state.set_shared("simulator/stage", stage);
     stepper.save(state);
     energy_monitor.save(state);
     quasi_static_end->save(state);
@@ -290,10 +401,71 @@ namespace MpmOtm
 
   template <int dim>
   void
+  Simulator<dim>::check_time_step_after_adding(
+    const std::string &stage_name) const
+  {
+    const auto stable =
+      StableTimeStep<dim>().estimate(*points,
+                                     *shape_functions,
+                                     *system,
+                                     *mass_matrix,
+                                     *materials,
+                                     *problem_description,
+                                     particle_transfer->velocity_for_stability(
+                                       nodal_update->particle_velocity()));
+    AssertThrow(time_step <= stable.time_step,
+                ExcMessage(
+                  "With the bodies that stage " + stage_name +
+                  " adds, the stable time step 2 / omega_max is " +
+                  Utilities::to_string(stable.time_step) +
+                  " s, below the run's time step " +
+                  Utilities::to_string(time_step) + " s (" +
+                  (automatic_time_step ?
+                     "Time step = auto takes it from the bodies present at "
+                     "the start). Choose Time/Time step = " :
+                     "Time/Time step). Choose a time step of at most ") +
+                  Utilities::to_string(stable.time_step) +
+                  " s or less (manual, 'Stages')."));
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::record_stage(const unsigned int stage,
+                               const unsigned int first_step,
+                               const double       start_time,
+                               const unsigned int last_step,
+                               const std::string &ending) const
+  {
+    std::string problem;
+    if (Utilities::MPI::this_mpi_process(communicator) == 0)
+      {
+        std::ostringstream row;
+        row << std::setprecision(12) << last_step << ',' << stage << ','
+            << stage_plan->stages()[stage].name << ',' << first_step << ','
+            << start_time << ',' << current_time << ',' << ending << '\n';
+        problem =
+          OutputDirectory::append_to_file(output->directory() + "/stages.csv",
+                                          row.str());
+      }
+    stop_if_any_rank_failed(communicator,
+                            problem,
+                            "",
+                            "Free space on the disk of Output/Directory.");
+  }
+
+
+
+  template <int dim>
+  void
   Simulator<dim>::reduce_strength(const double factor)
   {
     AssertThrow(factor > 0 && std::isfinite(factor), ExcInternalError());
-    materials->reduce_strength(factor);
+    if (stage_plan->stages().size() > 1)
+      pending_strength_factor = factor;
+    else
+      materials->reduce_strength(factor);
   }
 
 
@@ -318,7 +490,7 @@ namespace MpmOtm
   bool
   Simulator<dim>::ends_at_rest() const
   {
-    return quasi_static_end->enabled();
+    return stage_plan->stages().back().end_at_rest;
   }
 
 

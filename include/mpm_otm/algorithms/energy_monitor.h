@@ -54,6 +54,14 @@ namespace MpmOtm
           const double                local_supplied_work);
 
     /**
+     * Start the balance anew at the next check: a stage that removes or
+     * adds material, whose energy no load supplied or took away. The energy
+     * then found is the start's, and the work counts from there.
+     */
+    void
+    restart();
+
+    /**
      * The changes that most often cure an instability, most likely first,
      * for the message of every check that finds one.
      */
@@ -81,6 +89,10 @@ namespace MpmOtm
     bool           started        = false;
     double         initial_energy = 0;
     double         energy_floor   = 0;
+    /// The work supplied on all ranks before the balance started.
+    double work_at_start = 0;
+    /// Whether a stage restarted the balance.
+    bool stage_started = false;
   };
 } // namespace MpmOtm
 

@@ -69,6 +69,14 @@ namespace MpmOtm
           const double            supplied_work);
 
     /**
+     * Start anew at the start of a stage, the work @p supplied_work (of all
+     * ranks) done by the loads so far: the reference E_ref and the trend
+     * then count from here.
+     */
+    void
+    restart(const double supplied_work);
+
+    /**
      * Whether the last check found the body at rest.
      */
     bool
@@ -103,8 +111,10 @@ namespace MpmOtm
     unsigned int checks_at_rest = 0;
     /// The largest grid kinetic energy so far.
     double largest_kinetic_energy = 0;
-    /// The work of the loads at the last check.
+    /// The work of the loads at the last check, since work_at_start.
     double work = 0;
+    /// The work of the loads before the stage began.
+    double work_at_start = 0;
     /// (time, E_k) at every check, for the trend of summary().
     std::vector<std::pair<double, double>> history;
   };

@@ -12,9 +12,10 @@ namespace MpmOtm
 
   /**
    * The names a parameter file gives to its repeated subsections: the
-   * entries "Materials", "Bodies", "Boundaries" and "Surface loads" list
-   * them, and each name then has a subsection "Material <name>",
-   * "Body <name>", "Boundary <name>" or "Surface load <name>". ParameterHandler
+   * entries "Materials", "Bodies", "Boundaries", "Surface loads" and
+   * "Stages" list them, and each name then has a subsection
+   * "Material <name>", "Body <name>", "Boundary <name>",
+   * "Surface load <name>" or "Stage <name>". ParameterHandler
    * needs every subsection declared before it parses a file, so the names are
    * read first, from the file's text, by read().
    */
@@ -28,6 +29,8 @@ namespace MpmOtm
     std::vector<std::string> boundaries;
     /// Names of the loads on parts of the bodies' surfaces.
     std::vector<std::string> surface_loads;
+    /// Names of the stages of a staged run, in the order they run.
+    std::vector<std::string> stages;
 
     /**
      * Declare the entries that list the names.

@@ -43,6 +43,13 @@ namespace MpmOtm
     is_active(const double time) const;
 
     /**
+     * Set the local damping coefficient alpha, in [0, 1) (a stage that
+     * changes it).
+     */
+    void
+    set_coefficient(const double alpha);
+
+    /**
      * Damp the locally owned nodal forces of @p system (after assembly),
      * and keep the damping's share in NodalSystem::damping_force.
      */

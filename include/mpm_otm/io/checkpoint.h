@@ -36,7 +36,7 @@ namespace MpmOtm
    * Resuming reads the newest complete checkpoint on any number of ranks.
    * Before anything is decoded or any output removed, it checks every
    * file against its checksum and the identity against the resumed run's
-   * (parameters.prm may differ only in Time/End time and the subsections
+   * (parameters.prm may differ only in the end time and the subsections
    * Output and Checkpoint), and refuses with a message naming the file or
    * the entries. Then every rank reads every rank's files and keeps the
    * points of its cells.
@@ -58,6 +58,14 @@ namespace MpmOtm
      */
     void
     parse_parameters(ParameterHandler &prm);
+
+    /**
+     * The entry that holds the end time of the run, @p entry (default
+     * Time/End time; the last stage's End time in a staged run), and its
+     * value @p time: a resumed run may extend it.
+     */
+    void
+    set_end_time(const std::string &entry, const double time);
 
     /**
      * Take the fingerprint of the run's grid (BackgroundGrid::fingerprint()),
@@ -115,8 +123,9 @@ namespace MpmOtm
     unsigned int n_kept        = 2;
     /// Every entry of the parameters, by its path ("Time/End time").
     std::map<std::string, std::string> parameters;
-    /// The end time of this run (Time/End time).
-    double end_time = 0;
+    /// The end time of this run and the entry that gives it.
+    double      end_time  = 0;
+    std::string end_entry = "Time/End time";
     /// CRC-32 of the grid (set_grid_fingerprint()).
     std::uint32_t grid_fingerprint = 0;
     /// When the run started or the last checkpoint was written.

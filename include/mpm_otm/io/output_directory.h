@@ -36,9 +36,10 @@ namespace MpmOtm
 
     /**
      * Prepare @p directory for a new run: if it holds another run's output
-     * (a statistics.csv, monitoring.csv, parameters.prm, .pvd or .xdmf
-     * file), refuse unless @p overwrite, and then remove that run's step
-     * files, .pvd and .xdmf files, monitoring.csv and checkpoints; nothing
+     * (a statistics.csv, monitoring.csv, stages.csv, parameters.prm, .pvd
+     * or .xdmf file), refuse unless @p overwrite, and then remove that
+     * run's step files, .pvd and .xdmf files, monitoring.csv, stages.csv
+     * and checkpoints; nothing
      * else in the directory is touched.
      */
     std::string
@@ -47,7 +48,8 @@ namespace MpmOtm
     /**
      * Prepare @p directory for a run resumed after time step @p step:
      * remove the step files of later steps and unfinished checkpoints, and
-     * the rows of statistics.csv and monitoring.csv after that step (and a
+     * the rows of statistics.csv, monitoring.csv and stages.csv after that
+     * step (and a
      * last row that an interruption cut off).
      */
     std::string

@@ -71,6 +71,15 @@ namespace MpmOtm
     seed(const BackgroundGrid<dim> &grid, const SeedingBodies<dim> &bodies);
 
     /**
+     * Seed @p bodies into the points there are already, by the same
+     * pattern as seed() (a body a stage adds to the run). The new points'
+     * ids are those of their places in the pattern, which no point that
+     * was seeded elsewhere has. Stops if a body receives no point.
+     */
+    void
+    add(const SeedingBodies<dim> &bodies);
+
+    /**
      * Find the cell of every point after the points have moved. A point
      * that has left the grid stops the run with its id and position.
      */
@@ -131,6 +140,13 @@ namespace MpmOtm
 
 
   private:
+    /**
+     * Insert the points of the seeding pattern that lie in @p bodies, count
+     * them per body and stop if a body has none. Collective.
+     */
+    void
+    insert_pattern(const SeedingBodies<dim> &bodies);
+
     /**
      * Seed the cells of a Mesh file: per locally owned cell, n^dim points
      * at reference positions mapped to the cell (quadrilaterals/hexahedra:

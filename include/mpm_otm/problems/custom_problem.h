@@ -71,6 +71,9 @@ namespace MpmOtm
     std::pair<SymmetricTensor<2, dim>, double>
     initial_stress(const Point<dim> &X, const unsigned int body) const override;
 
+    void
+    set_present_bodies(const std::vector<bool> &present) override;
+
     bool
     has_body_force() const override;
 
@@ -102,13 +105,16 @@ namespace MpmOtm
   private:
     /**
      * The weight per unit area of the material above @p X: the integral of
-     * the density over the vertical line from X to the top of the grid,
-     * times the vertical component of gravity (negative: compression).
+     * the density over the vertical line from X to the top of the grid
+     * (of the present bodies), times the vertical component of gravity
+     * (negative: compression).
      */
     double
     vertical_stress(const Point<dim> &X) const;
 
     std::vector<Body<dim>> bodies;
+    /// Whether each body is present (set_present_bodies(); empty: all).
+    std::vector<bool> present_bodies;
     /// The physical groups of the Mesh files the bodies are groups of, by
     /// the bodies' entry Mesh file (empty: the grid's).
     std::map<std::string, std::unique_ptr<MeshGroups<dim>>> mesh_groups;

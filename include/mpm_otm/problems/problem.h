@@ -142,6 +142,16 @@ namespace MpmOtm
     initial_stress(const Point<dim> &X, const unsigned int body) const;
 
     /**
+     * Which bodies are present (a stage of the run removes or adds some):
+     * body_containing() finds these only, so that a geostatic initial
+     * stress counts their weight and a body added later may take the place
+     * of one removed before (a backfill). Default: nothing to do (one
+     * body).
+     */
+    virtual void
+    set_present_bodies(const std::vector<bool> &present);
+
+    /**
      * Whether the problem runs on any background grid, in particular on a
      * Mesh file (default: false; the benchmarks are defined on box grids,
      * whose sides have the boundary ids 0 to 2 dim - 1).

@@ -56,6 +56,8 @@ namespace MpmOtm
   class VolumetricLockingRemedy;
   template <int dim>
   class QuasiStaticEnd;
+  template <int dim>
+  class StagePlan;
   class CheckpointState;
 
   /**
@@ -121,7 +123,9 @@ namespace MpmOtm
      * Divide the strength of every material by @p factor
      * (Material::reduce_strength()): a trial of a strength reduction, after
      * setup() (whose initial stresses, e.g. a geostatic K0, keep the
-     * unreduced strengths) and before run(). Once per run.
+     * unreduced strengths) and before run(). In a staged run the strengths
+     * are divided at the start of the last stage, the earlier ones running
+     * with the full strengths. Once per run.
      */
     void
     reduce_strength(const double factor);
@@ -135,7 +139,7 @@ namespace MpmOtm
 
     /**
      * Whether the run ends when it comes to rest (subsection "Quasi-static
-     * end" on).
+     * end" on; with Stages: the last stage's End at rest).
      */
     bool
     ends_at_rest() const;
@@ -213,12 +217,34 @@ namespace MpmOtm
 
     /**
      * Write a checkpoint after step @p step with the state of every part of
-     * the run, including @p stepper's and @p energy_monitor's.
+     * the run, including @p stepper's and @p energy_monitor's, and the
+     * stage: its number @p stage, first step and start time.
      */
     void
-    write_checkpoint(const unsigned int        step,
-                     const TimeStepper<dim>   &stepper,
-                     const EnergyMonitor<dim> &energy_monitor);
+    write_checkpoint(const unsigned int         step,
+                     const TimeStepper<dim>    &stepper,
+                     const EnergyMonitor<dim>  &energy_monitor,
+                     const std::vector<double> &stage);
+
+    /**
+     * Stop with a message naming the stage @p stage_name if the time step
+     * exceeds the stable time step of the points now there (after a stage
+     * has added bodies). Collective.
+     */
+    void
+    check_time_step_after_adding(const std::string &stage_name) const;
+
+    /**
+     * Append the row of a stage that has ended to stages.csv in the output
+     * directory (rank 0): its number @p stage, first and last step, start
+     * and end time and how it ended, @p ending.
+     */
+    void
+    record_stage(const unsigned int stage,
+                 const unsigned int first_step,
+                 const double       start_time,
+                 const unsigned int last_step,
+                 const std::string &ending) const;
 
     MPI_Comm           communicator;
     ConditionalOStream pcout;
@@ -253,6 +279,11 @@ namespace MpmOtm
     std::unique_ptr<Checkpoint<dim>>         checkpoint;
     /// Subsection "Quasi-static end".
     std::unique_ptr<QuasiStaticEnd<dim>> quasi_static_end;
+    /// The stages (one for a run without Stages).
+    std::unique_ptr<StagePlan<dim>> stage_plan;
+    /// The factor that reduce_strength() leaves for the start of the last
+    /// stage of a staged run (1: none).
+    double pending_strength_factor = 1;
     /// Volumetric locking remedy = automatic: the remedy is dropped where
     /// the shape functions leave it nothing to do.
     bool automatic_locking_remedy = false;

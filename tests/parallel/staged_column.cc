@@ -1,0 +1,224 @@
+// Stages (Stages, subsections "Stage NAME") against closed forms, and a run
+// resumed inside a stage.
+//
+// prm/staged-column.prm: a hypo-elastic column [0, 1] x [0, 6], sides on
+// rollers, base fixed, gravity 10 m/s^2, M = E (1 - nu) / ((1 + nu)
+// (1 - 2 nu)) = 13.46 MPa, in three stages:
+// - initial: the base (Y < 4) and the layer cut (4 < Y < 6) in their
+//   geostatic state, which is at rest;
+// - excavation: cut removed, displacements reset: the base unloads by
+//   q1 = rho g 2 m = 40 kPa and heaves by u_y(Y) = q1 Y / M (11.9 mm at its
+//   top), its stress sigma_yy = -rho g (4 - Y);
+// - backfill: fill (E = 5 MPa, rho = 1500 kg/m^3) takes cut's place with
+//   the geostatic stress of its own weight, displacements reset: the base
+//   settles by u_y(Y) = -q2 Y / M, q2 = 30 kPa, sigma_yy = -rho g (4 - Y) -
+//   q2, and the fill moves down with the base's top, by -q2 4 m / M.
+// Each loaded stage ends at rest (Quasi-static end, at 1e-8).
+// Asserted at the end of each stage (from stages.csv): the number of points
+// (384, 256, 384), every base point's displacement within 1 % of q H / M of
+// the closed form, the base's sigma_yy within 1 % of q; the fill's
+// displacement within 1.5 % of q2 4 m / M (the base's top cell errs most,
+// by the usual MPM error of a settlement against the cell size, and the
+// fill moves with it). stages.csv: the three stages in order, each
+// starting the step after the one before ended, the first by its End time,
+// the others at rest.
+//
+// Then the run is resumed from its checkpoint of step 400, inside the
+// excavation stage (the newer ones removed): it crosses into the backfill
+// stage, adds the fill and must end with every point and stages.csv equal
+// to the uninterrupted run's (bit by bit on the same number of ranks).
+
+#include <mpm_otm/material_points/material_points.h>
+#include <mpm_otm/material_points/property_layout.h>
+
+#include <filesystem>
+#include <fstream>
+#include <map>
+
+#include "../tests.h"
+
+using namespace MpmOtm;
+using namespace MpmOtmTests;
+
+namespace
+{
+  const double E = 10e6, nu = 0.3, rho = 2000., g = 10.;
+  const double M  = E * (1. - nu) / ((1. + nu) * (1. - 2. * nu));
+  const double q1 = rho * g * 2., q2 = 1500. * g * 2.;
+
+  /// The errors at one output step.
+  struct StepErrors
+  {
+    types::particle_index n_points                = 0;
+    double                excavation_displacement = 0, excavation_stress = 0;
+    double backfill_displacement = 0, backfill_stress = 0, fill = 0;
+  };
+
+  StepErrors
+  errors(const Simulator<2> &simulator)
+  {
+    using Layout = PropertyLayout<2>;
+    StepErrors result;
+    double     worst[5] = {0, 0, 0, 0, 0};
+    for (const auto &particle : simulator.material_points().particle_handler())
+      {
+        const auto     properties = particle.get_properties();
+        const Point<2> X(
+          Layout::get_vector(properties, Layout::initial_position));
+        const double u = particle.get_location()[1] - X[1];
+        const double s = Layout::get_stress(properties)[1][1];
+        if (X[1] < 4.)
+          {
+            const double weight = -rho * g * (4. - X[1]);
+            worst[0] =
+              std::max(worst[0], std::abs(u - q1 * X[1] / M) / (q1 * 4. / M));
+            worst[1] = std::max(worst[1], std::abs(s - weight) / q1);
+            worst[2] =
+              std::max(worst[2], std::abs(u + q2 * X[1] / M) / (q2 * 4. / M));
+            worst[3] = std::max(worst[3], std::abs(s - weight + q2) / q2);
+          }
+        else
+          worst[4] =
+            std::max(worst[4], std::abs(u + q2 * 4. / M) / (q2 * 4. / M));
+      }
+    Utilities::MPI::max(ArrayView<const double>(worst, 5),
+                        MPI_COMM_WORLD,
+                        ArrayView<double>(worst, 5));
+    result.n_points = simulator.material_points().n_global_points();
+    result.excavation_displacement = worst[0];
+    result.excavation_stress       = worst[1];
+    result.backfill_displacement   = worst[2];
+    result.backfill_stress         = worst[3];
+    result.fill                    = worst[4];
+    return result;
+  }
+
+  std::vector<std::vector<std::string>>
+  read_stages(const std::string &directory)
+  {
+    std::ifstream                         in(directory + "/stages.csv");
+    std::string                           line;
+    std::vector<std::vector<std::string>> rows;
+    std::getline(in, line);
+    check(line == "step,stage,name,first_step,start_time,end_time,end",
+          "stages.csv has the header <" + line + ">");
+    while (std::getline(in, line))
+      rows.push_back(Utilities::split_string_list(line, ','));
+    return rows;
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  initlog();
+
+  const std::string directory = "output-staged-column";
+  const std::string changes   = "subsection Checkpoint\n set Interval = 200\n"
+                                " set Number kept = 10\nend\n";
+  std::map<unsigned int, StepErrors>        at_step;
+  std::map<types::particle_index, Point<2>> uninterrupted;
+  {
+    auto simulator = make_simulator<2>("staged-column.prm", changes, directory);
+    simulator->run([&](const unsigned int step, const Statistics<2> &) {
+      at_step[step] = errors(*simulator);
+    });
+    for (const auto &particle : simulator->material_points().particle_handler())
+      uninterrupted[particle.get_id()] = particle.get_location();
+  }
+  const auto stages = read_stages(directory);
+  check(stages.size() == 3, "stages.csv has not three stages");
+  const char *names[3]  = {"initial", "excavation", "backfill"};
+  const char *ending[3] = {"end time", "at rest", "at rest"};
+  for (unsigned int k = 0; k < 3; ++k)
+    {
+      check(stages[k].size() == 7 && stages[k][1] == std::to_string(k) &&
+              stages[k][2] == names[k] && stages[k][6] == ending[k],
+            "row " + std::to_string(k) + " of stages.csv is not stage " +
+              names[k] + " ending by " + ending[k]);
+      check(std::stoul(stages[k][3]) ==
+              (k == 0 ? 1 : std::stoul(stages[k - 1][0]) + 1),
+            std::string("stage ") + names[k] +
+              " does not start after the stage before");
+    }
+  check(std::stod(stages[0][5]) == 0.1, "stage initial ends at its End time");
+  deallog << "stages.csv: initial, excavation, backfill; each starts after "
+             "the one before; initial ends at its End time, the others at "
+             "rest"
+          << std::endl;
+
+  const auto &initial    = at_step.at(std::stoul(stages[0][0]));
+  const auto &excavation = at_step.at(std::stoul(stages[1][0]));
+  const auto &backfill   = at_step.at(std::stoul(stages[2][0]));
+  // One decimal: local damping, which acts against the sign of each nodal
+  // velocity, lets the motion near rest differ between rank counts (and so
+  // the step at which a stage comes to rest), by 1e-4 of the values here.
+  deallog << std::fixed << std::setprecision(1)
+          << "points: " << initial.n_points << ", " << excavation.n_points
+          << ", " << backfill.n_points << std::endl
+          << "excavation: heave error "
+          << 100. * excavation.excavation_displacement
+          << " % of q1 H / M, sigma_yy error "
+          << 100. * excavation.excavation_stress << " % of q1" << std::endl
+          << "backfill: settlement error "
+          << 100. * backfill.backfill_displacement
+          << " % of q2 H / M, sigma_yy error "
+          << 100. * backfill.backfill_stress << " % of q2, fill displacement "
+          << 100. * backfill.fill << " % of q2 H / M" << std::endl;
+  check(initial.n_points == 384 && excavation.n_points == 256 &&
+          backfill.n_points == 384,
+        "the stages do not remove and add the bodies' points");
+  check(excavation.excavation_displacement < 0.01 &&
+          excavation.excavation_stress < 0.01,
+        "the excavation's heave or stress is not the closed form");
+  check(backfill.backfill_displacement < 0.01 &&
+          backfill.backfill_stress < 0.01,
+        "the backfill's settlement or stress is not the closed form");
+  check(backfill.fill < 0.015, "the fill does not move with the base's top");
+
+  // Resume from the checkpoint of step 400, in the excavation stage.
+  check(std::stoul(stages[1][3]) < 400 && std::stoul(stages[1][0]) > 400,
+        "step 400 is not in the excavation stage");
+  MPI_Barrier(MPI_COMM_WORLD);
+  if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+    for (const auto &entry : std::filesystem::directory_iterator(directory))
+      {
+        const std::string name = entry.path().filename().string();
+        if (name.rfind("checkpoint-", 0) == 0 &&
+            std::stoul(name.substr(11)) > 400)
+          std::filesystem::remove_all(entry.path());
+      }
+  MPI_Barrier(MPI_COMM_WORLD);
+  {
+    auto simulator = make_simulator<2>("staged-column.prm",
+                                       changes,
+                                       directory,
+                                       MPI_COMM_WORLD,
+                                       true);
+    simulator->run();
+    unsigned int n_different = 0, n_points = 0;
+    for (const auto &particle : simulator->material_points().particle_handler())
+      {
+        const auto found = uninterrupted.find(particle.get_id());
+        n_different += (found == uninterrupted.end() ||
+                        found->second != particle.get_location()) ?
+                         1 :
+                         0;
+        ++n_points;
+      }
+    n_different = Utilities::MPI::sum(n_different, MPI_COMM_WORLD);
+    n_points    = Utilities::MPI::sum(n_points, MPI_COMM_WORLD);
+    const unsigned int n_uninterrupted =
+      Utilities::MPI::sum(static_cast<unsigned int>(uninterrupted.size()),
+                          MPI_COMM_WORLD);
+    check(n_points == n_uninterrupted && n_different == 0,
+          "the resumed run ends with " + std::to_string(n_different) +
+            " points elsewhere than the uninterrupted run's");
+  }
+  check(read_stages(directory) == stages,
+        "the resumed run's stages.csv differs from the uninterrupted run's");
+  deallog << "resumed at step 400 in stage excavation: every point and "
+             "stages.csv as in the uninterrupted run"
+          << std::endl;
+}
