@@ -27,9 +27,18 @@
 // excavation stage (the newer ones removed): it crosses into the backfill
 // stage, adds the fill and must end with every point and stages.csv equal
 // to the uninterrupted run's (bit by bit on the same number of ranks).
+//
+// Last, a strength reduction of a staged run divides the strengths at the
+// start of its last stage only: a von Mises column 4 m high (yield stress
+// 60 kPa, rho = 2000 kg/m^3, geostatic with K0 = 0.5, so that the von
+// Mises stress (1 - K0) rho g (4 m - Y) is at most 38.75 kPa at the lowest
+// points) in two stages, with its strength divided by 2 (30 kPa): no point
+// may yield in the first stage, points below Y = 1 m (where the stress
+// exceeds 30 kPa) must yield in the second.
 
 #include <mpm_otm/material_points/material_points.h>
 #include <mpm_otm/material_points/property_layout.h>
+#include <mpm_otm/materials/material_library.h>
 
 #include <filesystem>
 #include <fstream>
@@ -221,4 +230,110 @@ main(int argc, char **argv)
   deallog << "resumed at step 400 in stage excavation: every point and "
              "stages.csv as in the uninterrupted run"
           << std::endl;
+
+  {
+    const std::string text      = R"(
+set Dimension = 2
+set Problem   = custom
+set Bodies    = column
+set Boundaries = left, right, bottom
+set Stages    = initial, reduced
+subsection Time
+  set Time step = auto
+end
+subsection Mesh
+  set Lower corner = 0, 0
+  set Upper corner = 1, 4.5
+  set Subdivisions = 4, 18
+end
+subsection Material
+  set Model           = von Mises
+  set Young's modulus = 10e6
+  set Poisson's ratio = 0.3
+  set Density         = 2000
+  subsection von Mises
+    set Yield stress = 60e3
+  end
+end
+subsection Body column
+  set Lower corner         = 0, 0
+  set Upper corner         = 1, 4
+  set Initial stress       = geostatic
+  set Lateral stress ratio = 0.5
+end
+subsection Stage initial
+  set End time = 0.05
+end
+subsection Stage reduced
+  set End time = 0.1
+end
+subsection Boundary left
+  set Type = slip
+  set Boundary ids = 0
+end
+subsection Boundary right
+  set Type = slip
+  set Boundary ids = 1
+end
+subsection Boundary bottom
+  set Type = fixed
+  set Boundary ids = 2
+end
+subsection Gravity
+  set Vector = 0, -10
+end
+subsection Damping
+  set Local damping coefficient = 0.2
+end
+subsection Output
+  set Directory     = output-staged-reduction
+  set Format        = none
+  set Overwrite     = true
+  set Time interval = 0.05
+end
+)";
+    auto              simulator = simulator_from_text<2>(text);
+    simulator->reduce_strength(2.);
+    // The largest plastic strain of the points below 0.9 m and above 1.1 m
+    // at each output step.
+    std::map<unsigned int, std::pair<double, double>> plastic;
+    simulator->run([&](const unsigned int step, const Statistics<2> &) {
+      using Layout           = PropertyLayout<2>;
+      const auto &library    = simulator->material_library();
+      double      largest[2] = {0, 0};
+      for (const auto &particle :
+           simulator->material_points().particle_handler())
+        {
+          const auto         properties = particle.get_properties();
+          const unsigned int id         = Layout::get_material_id(properties);
+          const double       strain =
+            library[id].equivalent_plastic_strain(ArrayView<const double>(
+              &properties[library.first_internal_variable(id)],
+              library.n_internal_variables(id)));
+          const double Y =
+            Layout::get_vector(properties, Layout::initial_position)[1];
+          if (Y < 0.9)
+            largest[0] = std::max(largest[0], strain);
+          else if (Y > 1.1)
+            largest[1] = std::max(largest[1], strain);
+        }
+      Utilities::MPI::max(ArrayView<const double>(largest, 2),
+                          MPI_COMM_WORLD,
+                          ArrayView<double>(largest, 2));
+      plastic[step] = {largest[0], largest[1]};
+    });
+    const auto reduction = read_stages("output-staged-reduction");
+    check(reduction.size() == 2, "the reduction run has not two stages");
+    const auto first  = plastic.at(std::stoul(reduction[0][0]));
+    const auto second = plastic.at(std::stoul(reduction[1][0]));
+    check(first.first == 0. && first.second == 0.,
+          "a point yielded in the first stage, before the strength was "
+          "reduced");
+    check(second.first > 0.,
+          "no point below 0.9 m yielded with the reduced strength");
+    deallog << "strength reduction in stages: no plastic strain at the end "
+               "of stage initial; below 0.9 m "
+            << (second.first > 0. ? "plastic" : "elastic")
+            << " at the end of stage reduced" << std::endl;
+  }
 }
