@@ -244,7 +244,12 @@ namespace MpmOtm
       }
     present = present_at_start;
 
-    double previous_end = 0;
+    double     previous_end = 0;
+    const auto seconds      = [](const double time) {
+      std::ostringstream text;
+      text << time;
+      return text.str();
+    };
     for (const auto &name : names)
       {
         prm.enter_subsection("Stage " + name);
@@ -257,7 +262,7 @@ namespace MpmOtm
                                "/End time = " + prm.get("End time") +
                                " must be after the end of the stage before "
                                "(" +
-                               Utilities::to_string(previous_end) +
+                               seconds(previous_end) +
                                " s; the times count from the start of the "
                                "run)."));
         previous_end      = stage.end_time;

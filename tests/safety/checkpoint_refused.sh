@@ -120,3 +120,24 @@ sed -i "s/End time *= 0.2/End time = 0.3/" $directory/parameters.prm
 [ "$(tail -n 1 $directory/statistics.csv | cut -d, -f1)" = "300" ] ||
   fail "the resumed run did not continue to step 300"
 echo "a longer end time: accepted, run to step 300"
+
+# A staged run: the End time of its last stage may be extended, that of an
+# earlier stage may not change.
+sed "s/^ *set End time = 0.2$//; s/^set Bodies = block$/set Bodies = block\nset Stages = first, second/" "$prm" > staged.prm
+printf 'subsection Stage first\n  set End time = 0.1\nend\nsubsection Stage second\n  set End time = 0.2\nend\n' >> staged.prm
+case="a staged run, an earlier stage's End time changed"
+fresh_run staged.prm
+sed -i "s/End time *= 0.1 /End time = 0.12 /" $directory/parameters.prm
+refused "Stage first/End time = <0.12> [(]the run that wrote it: <0.1>[)]"
+case="a staged run, the last stage's End time before the stage before"
+fresh_run staged.prm
+sed -i "s/End time *= 0.2 /End time = 0.05 /" $directory/parameters.prm
+refused "Stage second/End time = 0.05 must be after the end of the stage before [(]0.1 s"
+fresh_run staged.prm
+sed -i "s/End time *= 0.2 /End time = 0.3 /" $directory/parameters.prm
+"$exe" --resume $directory > log 2>&1 || fail "the staged resume with a longer last stage failed:"
+[ "$(tail -n 1 $directory/statistics.csv | cut -d, -f1)" = "300" ] ||
+  fail "the resumed staged run did not continue to step 300"
+[ "$(tail -n 1 $directory/stages.csv | cut -d, -f1,3,6)" = "300,second,0.3" ] ||
+  fail "stages.csv does not end with stage second at step 300, t = 0.3"
+echo "a staged run: the last stage's End time extended, run to step 300"
