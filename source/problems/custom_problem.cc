@@ -299,8 +299,17 @@ namespace MpmOtm
   {
     // The density along the line is piecewise constant: integrate it in
     // steps, locating every change of body by bisection.
+    // On the boundary between two bodies both contain x: the first counts
+    // (a point of measure zero), where body_containing() would call it an
+    // overlap.
     const auto density = [&](const Point<dim> &x) {
-      const unsigned int body = body_containing(x);
+      unsigned int body = numbers::invalid_unsigned_int;
+      for (unsigned int b = 0;
+           b < bodies.size() && body == numbers::invalid_unsigned_int;
+           ++b)
+        if ((b >= present_bodies.size() || present_bodies[b]) &&
+            bodies[b].contains(x))
+          body = b;
       return body == numbers::invalid_unsigned_int ?
                0. :
                (*this->materials)[bodies[body].material_id()].density();
