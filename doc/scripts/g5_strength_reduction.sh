@@ -16,7 +16,7 @@
 #
 # Usage: doc/scripts/g5_strength_reduction.sh [path to mpm-otm] [cell sizes]
 # (default: build-release/mpm-otm, made by ./scripts/setup.sh run; 1 0.5
-# 0.25, which take about 1, 5 and 40 minutes with a release build)
+# 0.25, which take about 1, 5 and 10 minutes with a release build)
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
 exe=${1:-$root/build-release/mpm-otm}
