@@ -28,34 +28,13 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cd "$work"
 
-bishop=$(awk '/c = 10 kPa/ { for (i = 1; i <= NF; ++i) if ($i == "F") { gsub(";", "", $(i + 2)); print $(i + 2) } }' "$data/G5-bishop.txt")
-echo "# cells trial factor outcome at_rest end_time largest_displacement (m, s, m)" > "$data/G5-strength-reduction-trials.dat"
-echo "# cells factor_of_safety stands_at fails_at trials difference_from_Bishop_${bishop}_percent" > "$data/G5-factor-of-safety.dat"
-for h in $sizes; do
-  nx=$(awk "BEGIN{print int(45 / $h + 0.5)}")
-  ny=$(awk "BEGIN{print int(16 / $h + 0.5)}")
-  cp "$root/prm/G5-slope-strength-reduction.prm" run.prm
-  printf 'subsection Mesh\n set Subdivisions = %s, %s\nend\nsubsection Output\n set Directory = run-%s\n set Format = none\n set Write particle CSV = true\n set Time interval = 15\n set Overwrite = true\nend\n' \
-    "$nx" "$ny" "$h" >> run.prm
-  echo "G5 strength reduction on $h m cells ($nx x $ny)"
-  "$exe" run.prm > "run-$h.log" 2>&1 || { tail -5 "run-$h.log" >&2; exit 1; }
-  grep "^Strength reduction" "run-$h.log" | grep -v "output in" >&2
-  awk -F, -v h="$h" 'NR > 1 { print h, $1, $2, $3, $4, $5, $6 }' \
-    "run-$h/strength-reduction.csv" >> "$data/G5-strength-reduction-trials.dat"
-  awk -v h="$h" -v b="$bishop" '
-    $1 == h { n++; if ($4 == "stands" && (s == "" || $3 > s)) s = $3
-              if ($4 == "fails" && (f == "" || $3 < f)) f = $3 }
-    END { F = (s + f) / 2; printf "%s %.4f %s %s %d %.1f\n", h, F, s, f, n, 100 * (F / b - 1) }' \
-    "$data/G5-strength-reduction-trials.dat" >> "$data/G5-factor-of-safety.dat"
-  mechanism=$(awk '/failure mechanism/ { sub(/.*</, ""); sub(/>.*/, ""); print }' "run-$h/factor-of-safety.txt")
-  last=$(ls "$mechanism"/particles-*.csv | sort | tail -n 1)
-  awk -F, 'NR == 1 { for (i = 1; i <= NF; ++i) column[$i] = i; next }
-           { printf "%.4g %.4g %.3g\n", $column["X"], $column["Y"], $column["plastic_strain"] }' \
-    "$last" > "$data/G5-mechanism.dat"
-done
+. "$root/doc/scripts/strength_reduction_runs.sh"
+# shellcheck disable=SC2086
+strength_reduction_runs G5-slope-strength-reduction.prm \
+  "$data/G5-strength-reduction-trials.dat" "$data/G5-factor-of-safety.dat" \
+  "$data/G5-mechanism.dat" $sizes
 cat "$data/G5-factor-of-safety.dat"
 
-read -r xc yc rc < <(awk '/c = 10 kPa/ { gsub(",", ""); for (i = 1; i <= NF; ++i) if ($i == "centre") print $(i + 1), $(i + 2), $(i + 4) }' "$data/G5-bishop.txt")
 finest=$(echo "$sizes" | tr ' ' '\n' | sort -g | head -n 1)
 gnuplot <<GP
 set terminal pngcairo size 1200,900 font ",11" noenhanced
@@ -93,18 +72,7 @@ plot "$data/G5-factor-of-safety.dat" using 1:2:3:4 with yerrorbars pt 7 title "s
      1.10 * $bishop with lines dt 3 lc rgb "gray40" title "+10 %"
 set origin 0, 0
 set title "plastic strain of the last failing trial ($finest m cells), initial positions"
-set xlabel "x (m)"
-set ylabel "y (m)"
-set size ratio -1 1, 0.5
-set xrange [0:45]
-set yrange [0:16]
-set cbrange [0:1]
-set cblabel "equivalent plastic strain"
-set key top right
-xc = $xc; yc = $yc; rc = $rc
-plot "$data/G5-mechanism.dat" using 1:2:3 with points pt 5 ps 0.25 palette notitle, \
-     [xc - rc:xc + rc] (yc - sqrt(rc**2 - (x - xc)**2) < (x < 15 ? 15 : x < 30 ? 15 - (x - 15) / 1.5 : 5) ? yc - sqrt(rc**2 - (x - xc)**2) : 1/0) \
-       with lines lw 2 lc rgb "black" title "Bishop's critical circle"
+$(mechanism_plot "$data/G5-mechanism.dat")
 unset multiplot
 GP
 echo "wrote $data/G5-strength-reduction-trials.dat, G5-factor-of-safety.dat, G5-mechanism.dat and doc/figures/G5-strength-reduction.png"
