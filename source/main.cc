@@ -125,10 +125,10 @@ namespace
                             found[3].str() +
                             ": a stage cannot set this entry. A stage sets "
                             "its End time, End at rest, Remove bodies, Add "
-                            "bodies, Reset displacements and Local damping "
-                            "coefficient; the grid, shape functions, method, "
-                            "materials and conditions are those of the whole "
-                            "run (manual, 'Stages')."));
+                            "bodies, Reset displacements, Local damping "
+                            "coefficient and Surface loads; the grid, shape "
+                            "functions, method, materials and conditions are "
+                            "those of the whole run (manual, 'Stages')."));
             }
           throw;
         }

@@ -348,12 +348,23 @@ namespace MpmOtm
     const Tensor<1, dim> area = Layout::get_vector(properties, first_slot + 1);
     const Tensor<2, dim> F    = Layout::get_deformation_gradient(properties);
     PointLoad            result;
-    if (!load.pressure->is_zero())
+    if (load.acting && !load.pressure->is_zero())
       result.force -= load.pressure->value(X, time) * (cofactor(F) * area);
-    if (!load.traction->is_zero())
+    if (load.acting && !load.traction->is_zero())
       result.force += area.norm() * load.traction->vector_value(X, time);
     result.offset = F * Layout::get_vector(properties, first_slot + 1 + dim);
     return result;
+  }
+
+
+
+  template <int dim>
+  void
+  SurfaceLoads<dim>::set_acting(const std::vector<bool> &acting)
+  {
+    AssertDimension(acting.size(), loads.size());
+    for (unsigned int k = 0; k < loads.size(); ++k)
+      loads[k].acting = acting[k];
   }
 
 

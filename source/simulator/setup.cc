@@ -260,12 +260,17 @@ namespace MpmOtm
     }
     current_time = 0;
     Activity::set("reading the checkpoint");
+    // A resumed run, or a trial of a strength reduction that starts from
+    // the state before the last stage another trial wrote.
+    const bool starts_from_state =
+      !state_before_last_stage.empty() && !writes_state_before_last_stage;
     std::string resumed_from;
-    if (resume)
+    if (resume || starts_from_state)
       {
         // The grid moves first; the points then enter their saved cells.
-        resumed_from =
-          Checkpoint<dim>::newest(output->directory(), communicator);
+        resumed_from = Checkpoint<dim>::newest(resume ? output->directory() :
+                                                        state_before_last_stage,
+                                               communicator);
         resumed_state = std::make_unique<CheckpointState>();
         std::tie(resumed_step, current_time) =
           checkpoint->read(resumed_from, *points, *resumed_state, communicator);
@@ -288,7 +293,7 @@ namespace MpmOtm
                        *materials,
                        reaction_names(),
                        problem_description->has_gravity(),
-                       resumed_step);
+                       resume ? resumed_step : 0);
     if (resume)
       output->load(*resumed_state);
     else
@@ -336,6 +341,10 @@ namespace MpmOtm
     if (resume)
       pcout << "resumed from <" << resumed_from << ">, written after time step "
             << resumed_step << " (t = " << current_time << ")" << std::endl;
+    else if (starts_from_state)
+      pcout << "starts from the state before the last stage <" << resumed_from
+            << ">, written after time step " << resumed_step
+            << " (t = " << current_time << ")" << std::endl;
   }
 
 

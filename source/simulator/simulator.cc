@@ -171,11 +171,23 @@ namespace MpmOtm
           stage_number     = static_cast<unsigned int>(stage[0]);
           stage_first_step = static_cast<unsigned int>(stage[1]);
           stage_start_time = stage[2];
-          stage_plan->restore_damping(stage_number, *damping);
+          stage_plan->restore(stage_number, *damping, *problem_description);
           resumed_state.reset();
-          resumed_inside_stage = true;
+          // The state before the last stage was written before the stage
+          // began.
+          resumed_inside_stage = state_before_last_stage.empty();
         }
       unsigned int step = resumed_step;
+      // A checkpoint after this step, in this stage.
+      const auto checkpoint_into = [&](const std::string &directory) {
+        write_checkpoint(directory,
+                         step,
+                         stepper,
+                         energy_monitor,
+                         {double(stage_number),
+                          double(stage_first_step),
+                          stage_start_time});
+      };
       Activity::set("the time steps");
       for (; stage_number < stages.size() && stop_message.empty();
            ++stage_number)
@@ -186,45 +198,53 @@ namespace MpmOtm
             {
               stage_first_step = step + 1;
               stage_start_time = current_time;
-              if (stage_plan->staged())
-                try
-                  {
-                    TimerOutput::Scope scope(timer, "stages");
-                    std::string        changes =
-                      stage_plan->begin(stage_number,
+              if (last_stage && writes_state_before_last_stage)
+                {
+                  TimerOutput::Scope scope(timer, "checkpoint");
+                  checkpoint_into(state_before_last_stage);
+                }
+              try
+                {
+                  TimerOutput::Scope scope(timer, "stages");
+                  std::string        changes =
+                    stage_plan->staged() ?
+                             stage_plan->begin(stage_number,
                                         *points,
                                         *problem_description,
                                         *materials,
-                                        *damping);
-                    if (last_stage && pending_strength_factor != 1.)
-                      {
-                        materials->reduce_strength(pending_strength_factor);
-                        changes +=
-                          "; strengths divided by " +
-                          Utilities::to_string(pending_strength_factor);
-                      }
-                    pcout << "Stage " << stage.name << " begins at step "
-                          << stage_first_step << ", t = " << current_time
-                          << ": " << changes << '.' << std::endl;
-                    if (!stage.added_bodies.empty())
-                      check_time_step_after_adding(stage.name);
-                    if (stage_number > 0)
-                      energy_monitor.restart();
-                    quasi_static_end->restart(
-                      Utilities::MPI::sum(stepper.supplied_work(),
-                                          communicator));
-                  }
-                catch (const std::exception &error)
-                  {
-                    stop_message =
-                      "Stopped at the start of stage " + stage.name +
-                      " (t = " + Utilities::to_string(current_time) +
-                      "); the output up to the last output step "
-                      "is in <" +
-                      output->directory() + ">. " + message_of(error);
-                    timer.disable_output();
-                    break;
-                  }
+                                        *damping) :
+                             std::string();
+                  if (last_stage && pending_strength_factor != 1.)
+                    {
+                      materials->reduce_strength(pending_strength_factor);
+                      changes += "; strengths divided by " +
+                                 Utilities::to_string(pending_strength_factor);
+                    }
+                  if (stage_plan->staged())
+                    {
+                      pcout << "Stage " << stage.name << " begins at step "
+                            << stage_first_step << ", t = " << current_time
+                            << ": " << changes << '.' << std::endl;
+                      if (!stage.added_bodies.empty())
+                        check_time_step_after_adding(stage.name);
+                      if (stage_number > 0)
+                        energy_monitor.restart();
+                      quasi_static_end->restart(
+                        Utilities::MPI::sum(stepper.supplied_work(),
+                                            communicator));
+                    }
+                }
+              catch (const std::exception &error)
+                {
+                  stop_message = "Stopped at the start of stage " + stage.name +
+                                 " (t = " + Utilities::to_string(current_time) +
+                                 "); the output up to the last output step "
+                                 "is in <" +
+                                 output->directory() + ">. " +
+                                 message_of(error);
+                  timer.disable_output();
+                  break;
+                }
               if (stage_number == 0)
                 {
                   energy_monitor.check(*points,
@@ -321,12 +341,7 @@ namespace MpmOtm
                   (!signal.empty() || checkpoint->is_due(step, communicator)))
                 {
                   TimerOutput::Scope scope(timer, "checkpoint");
-                  write_checkpoint(step,
-                                   stepper,
-                                   energy_monitor,
-                                   {double(stage_number),
-                                    double(stage_first_step),
-                                    stage_start_time});
+                  checkpoint_into(output->directory());
                 }
               if (!signal.empty() && !run_ends)
                 {
@@ -373,7 +388,8 @@ namespace MpmOtm
 
   template <int dim>
   void
-  Simulator<dim>::write_checkpoint(const unsigned int         step,
+  Simulator<dim>::write_checkpoint(const std::string         &directory,
+                                   const unsigned int         step,
                                    const TimeStepper<dim>    &stepper,
                                    const EnergyMonitor<dim>  &energy_monitor,
                                    const std::vector<double> &stage)
@@ -389,12 +405,8 @@ namespace MpmOtm
     system->save(state);
     boundary_conditions->save(state);
     output->save(state);
-    checkpoint->write(output->directory(),
-                      step,
-                      current_time,
-                      *points,
-                      state,
-                      communicator);
+    checkpoint
+      ->write(directory, step, current_time, *points, state, communicator);
   }
 
 
@@ -462,10 +474,18 @@ namespace MpmOtm
   Simulator<dim>::reduce_strength(const double factor)
   {
     AssertThrow(factor > 0 && std::isfinite(factor), ExcInternalError());
-    if (stage_plan->stages().size() > 1)
-      pending_strength_factor = factor;
-    else
-      materials->reduce_strength(factor);
+    pending_strength_factor = factor;
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::share_state_before_last_stage(const std::string &directory,
+                                                const bool         write)
+  {
+    state_before_last_stage        = directory;
+    writes_state_before_last_stage = write;
   }
 
 

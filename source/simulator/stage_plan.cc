@@ -105,6 +105,26 @@ namespace MpmOtm
                   ExcMessage(entry + " = <" + text + ">: must be a number."));
       return value;
     }
+
+    /**
+     * The place of @p name in @p names; stops with @p message followed by
+     * the names (or "none") and @p advice if it is not there.
+     */
+    unsigned int
+    place_in(const std::vector<std::string> &names,
+             const std::string              &name,
+             const std::string              &message,
+             const std::string              &advice = "")
+    {
+      const auto  found = std::find(names.begin(), names.end(), name);
+      std::string known;
+      for (const auto &each : names)
+        known += (known.empty() ? "" : ", ") + each;
+      AssertThrow(found != names.end(),
+                  ExcMessage(message + (known.empty() ? "none" : known) + "." +
+                             advice));
+      return found - names.begin();
+    }
   } // namespace
 
 
@@ -164,6 +184,17 @@ namespace MpmOtm
                           "from the start of this stage on (Damping/Local "
                           "damping coefficient before any stage sets it). "
                           "Empty: unchanged.");
+        prm.declare_entry(
+          "Surface loads",
+          "",
+          Patterns::List(Patterns::Anything()),
+          "The surface loads (names in Surface loads) that act from the "
+          "start of this stage on, 'none' for none; the others give no "
+          "force. Empty: those of the stage before (every load, before a "
+          "stage names them). A load acts as its Pressure and Traction say "
+          "at the time t of the run, so that a load switched on at a stage "
+          "whose start time is not known (after a stage that ends at rest) "
+          "should not depend on t.");
         prm.leave_subsection();
       }
   }
@@ -178,6 +209,7 @@ namespace MpmOtm
   {
     const auto names      = SubsectionNames::names_in(prm, "Stages");
     const auto body_names = SubsectionNames::names_in(prm, "Bodies");
+    const auto load_names = SubsectionNames::names_in(prm, "Surface loads");
     named                 = !names.empty();
     prm.enter_subsection("Time");
     const std::string time    = prm.get("End time");
@@ -207,23 +239,18 @@ namespace MpmOtm
       std::vector<unsigned int> numbers;
       for (const auto &body : Utilities::split_string_list(prm.get(entry), ','))
         {
-          const auto found =
-            std::find(body_names.begin(), body_names.end(), body);
-          std::string known;
-          for (const auto &name : body_names)
-            known += (known.empty() ? "" : ", ") + name;
-          AssertThrow(found != body_names.end(),
-                      ExcMessage("Stage " + stage + "/" + entry + ": <" + body +
-                                 "> is not a body; the bodies (entry Bodies) "
-                                        "are: " +
-                                 (known.empty() ? "none" : known) + "."));
+          const unsigned int number =
+            place_in(body_names,
+                     body,
+                     "Stage " + stage + "/" + entry + ": <" + body +
+                       "> is not a body; the bodies (entry Bodies) are: ");
           AssertThrow(fixed_grid,
                       ExcMessage("Stage " + stage + "/" + entry +
                                  ": bodies can be removed or added only on a "
                                         "fixed grid (Method = MPM); OTM and Unified "
                                         "move the grid with the material, which must "
                                         "fill it at every stage."));
-          numbers.push_back(found - body_names.begin());
+          numbers.push_back(number);
         }
       return numbers;
     };
@@ -304,6 +331,22 @@ namespace MpmOtm
                           stage.damping_coefficient < 1.,
                         ExcMessage(damping_entry + " = " + damping +
                                    ": must lie in [0, 1)."));
+          }
+        const std::string loads = Utilities::trim(prm.get("Surface loads"));
+        if (!loads.empty())
+          {
+            stage.acting_loads.assign(load_names.size(), false);
+            if (loads != "none")
+              for (const auto &load : Utilities::split_string_list(loads, ','))
+                {
+                  stage.acting_loads[place_in(
+                    load_names,
+                    load,
+                    "Stage " + name + "/Surface loads: <" + load +
+                      "> is not a surface load; the loads (entry Surface "
+                      "loads) are: ",
+                    " Write none for none.")] = true;
+                }
           }
         prm.leave_subsection();
         stage_list.push_back(stage);
@@ -439,6 +482,17 @@ namespace MpmOtm
         changes << "local damping coefficient " << stage.damping_coefficient
                 << "; ";
       }
+    if (!stage.acting_loads.empty())
+      {
+        problem.surface_loads().set_acting(stage.acting_loads);
+        std::string acting;
+        const auto &load_names = problem.surface_loads().names();
+        for (unsigned int k = 0; k < load_names.size(); ++k)
+          if (stage.acting_loads[k])
+            acting += (acting.empty() ? "" : ", ") + load_names[k];
+        changes << "surface loads acting: "
+                << (acting.empty() ? std::string("none") : acting) << "; ";
+      }
     std::string text = changes.str();
     return text.empty() ? "no change" : text.substr(0, text.size() - 2);
   }
@@ -447,12 +501,17 @@ namespace MpmOtm
 
   template <int dim>
   void
-  StagePlan<dim>::restore_damping(const unsigned int stage,
-                                  LocalDamping<dim> &damping) const
+  StagePlan<dim>::restore(const unsigned int stage,
+                          LocalDamping<dim> &damping,
+                          Problem<dim>      &problem) const
   {
     for (unsigned int k = 0; k <= stage && k < stage_list.size(); ++k)
-      if (stage_list[k].damping_coefficient >= 0.)
-        damping.set_coefficient(stage_list[k].damping_coefficient);
+      {
+        if (stage_list[k].damping_coefficient >= 0.)
+          damping.set_coefficient(stage_list[k].damping_coefficient);
+        if (!stage_list[k].acting_loads.empty())
+          problem.surface_loads().set_acting(stage_list[k].acting_loads);
+      }
   }
 
 

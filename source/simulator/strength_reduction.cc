@@ -24,6 +24,13 @@ namespace MpmOtm
       out << std::setprecision(digits) << value;
       return out.str();
     }
+
+    /**
+     * The directory, in the analysis' Output/Directory, of the state at the
+     * start of the last stage that the first trial writes and the others
+     * start from.
+     */
+    const std::string state_directory_name = "state-before-last-stage";
   } // namespace
 
 
@@ -270,6 +277,9 @@ namespace MpmOtm
       {
         Simulator<dim> simulator(communicator, log);
         simulator.parse_parameters(prm);
+        simulator.share_state_before_last_stage(directory + "/" +
+                                                  state_directory_name,
+                                                number == 1);
         simulator.setup(prm);
         if (after_setup)
           after_setup();
@@ -320,11 +330,12 @@ namespace MpmOtm
         problem = OutputDirectory::clear_previous_run(directory, overwrite);
         std::error_code error;
         // The trials of an earlier analysis, which a shorter one would
-        // leave beside its own.
+        // leave beside its own, and the state they started from.
         if (problem.empty() && fs::is_directory(directory, error))
           for (const auto &entry : fs::directory_iterator(directory, error))
             if (problem.empty() &&
-                entry.path().filename().string().rfind("trial-", 0) == 0)
+                (entry.path().filename().string().rfind("trial-", 0) == 0 ||
+                 entry.path().filename() == state_directory_name))
               {
                 fs::remove_all(entry.path(), error);
                 if (error)

@@ -27,11 +27,15 @@
 //    = -t / lambda_1 (both within 1 % of p at every point), the horizontal
 //    force below 0.5 % of p w_0; lambda_1 - 1 is above 3 %, so that a
 //    pressure that did not follow the surface would fail.
+// 3. The column of 1. in stages that switch the load off, on and off again
+//    (Stage NAME/Surface loads; see below).
 
 #include <deal.II/base/mpi.h>
 
 #include <mpm_otm/material_points/material_points.h>
 #include <mpm_otm/material_points/property_layout.h>
+
+#include <map>
 
 #include "../tests.h"
 
@@ -185,4 +189,103 @@ main(int argc, char **argv)
             "the load's force does not follow the surface as it should");
       check(error < 1e-2, "sigma_yy is not the exact one");
     }
+
+  // 3. The column of 1. in three stages that switch the load (Stage
+  //    NAME/Surface loads): none acts to 0.2 s, then the pressure q until the
+  //    column is at rest, then none again until it is at rest. Asserted at
+  //    the end of each stage: the load's force in the statistics (0, -q x
+  //    1 m, 0, to round-off) and the largest error of the points'
+  //    settlements against 0, -q Y / M and 0 (no point has moved at all in
+  //    the first stage; the others within 1 % of q H / M: the elastic
+  //    column springs back).
+  {
+    const double      q = 10e3, E = 10e6, nu = 0.3, H = 4.;
+    const double      M = E * (1. - nu) / ((1. + nu) * (1. - 2. * nu));
+    std::ifstream     file(prm_file("surface-load-column.prm"));
+    std::stringstream contents;
+    contents << file.rdbuf();
+    auto simulator = simulator_from_text<2>(contents.str() + R"(
+set Stages = unloaded, loaded, unloading
+subsection Time
+  set End time = 1e-3
+end
+subsection Stage unloaded
+  set End time      = 0.2
+  set Surface loads = none
+end
+subsection Stage loaded
+  set End time      = 2
+  set End at rest   = true
+  set Surface loads = top
+end
+subsection Stage unloading
+  set End time      = 4
+  set End at rest   = true
+  set Surface loads = none
+end
+subsection Quasi-static end
+  set Kinetic energy ratio = 1e-8
+end
+subsection Output
+  set Directory          = output-surface-load-stages
+  set Format             = none
+  set Overwrite          = true
+  set Write particle CSV = false
+end
+)");
+    // Per output step: the load's force and the largest settlement error
+    // against no load and against q.
+    struct AtStep
+    {
+      Tensor<1, 2> force;
+      double       unloaded = 0, loaded = 0;
+    };
+    std::map<unsigned int, AtStep> at_step;
+    simulator->run([&](const unsigned int step, const Statistics<2> &stats) {
+      AtStep here;
+      here.force = stats.boundary_reactions.back().first;
+      for (const auto &particle :
+           simulator->material_points().particle_handler())
+        {
+          const Point<2> X(Layout::get_vector(particle.get_properties(),
+                                              Layout::initial_position));
+          const double   u = particle.get_location()[1] - X[1];
+          here.unloaded    = std::max(here.unloaded, std::abs(u));
+          here.loaded =
+            std::max(here.loaded, std::abs(u + q * X[1] / M) / (q * H / M));
+        }
+      here.unloaded = Utilities::MPI::max(here.unloaded, MPI_COMM_WORLD);
+      here.loaded   = Utilities::MPI::max(here.loaded, MPI_COMM_WORLD);
+      at_step[step] = here;
+    });
+    std::ifstream stages("output-surface-load-stages/stages.csv");
+    std::string   line;
+    std::getline(stages, line);
+    std::vector<AtStep> ends;
+    std::string         how_ended;
+    while (std::getline(stages, line))
+      {
+        const auto row = Utilities::split_string_list(line, ',');
+        ends.push_back(at_step.at(std::stoul(row[0])));
+        how_ended += (how_ended.empty() ? "" : ", ") + row[2] + ": " + row[6];
+      }
+    check(ends.size() == 3, "the staged column has not three stages");
+    deallog << "stages " << how_ended << "; force_y / q "
+            << ends[0].force[1] / q << ", " << ends[1].force[1] / q << ", "
+            << ends[2].force[1] / q << "; settlement " << ends[0].unloaded
+            << " m, error " << std::fixed << std::setprecision(2)
+            << 100. * ends[1].loaded << " % and "
+            << 100. * ends[2].unloaded / (q * H / M) << " % of q H / M"
+            << std::defaultfloat << std::endl;
+    check(ends[0].force.norm() == 0. && ends[2].force.norm() == 0.,
+          "a load that does not act has a force");
+    check(std::abs(ends[1].force[1] + q) < 1e-10 * q &&
+            std::abs(ends[1].force[0]) < 1e-10 * q,
+          "the load acting in stage loaded has not the force -q");
+    check(ends[0].unloaded == 0., "the column moved with no load acting");
+    check(ends[1].loaded < 1e-2,
+          "the loaded column's settlement is not q Y / M");
+    check(ends[2].unloaded < 1e-2 * q * H / M,
+          "the column has not sprung back with the load off");
+  }
 }

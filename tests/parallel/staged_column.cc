@@ -40,11 +40,15 @@
 // Mises stress (1 - K0) rho g (4 m - Y) is at most 38.75 kPa at the lowest
 // points) in two stages, with its strength divided by 2 (30 kPa): no point
 // may yield in the first stage, points below Y = 1 m (where the stress
-// exceeds 30 kPa) must yield in the second.
+// exceeds 30 kPa) must yield in the second. The same column by
+// Analysis = strength reduction: its second trial (F = 2) starts from the
+// state the first wrote before the last stage, runs that stage only and
+// ends with the statistics of the run above to the last digit.
 
 #include <mpm_otm/material_points/material_points.h>
 #include <mpm_otm/material_points/property_layout.h>
 #include <mpm_otm/materials/material_library.h>
+#include <mpm_otm/simulator/strength_reduction.h>
 
 #include <filesystem>
 #include <fstream>
@@ -273,7 +277,11 @@ subsection Stage initial
   set End time = 0.05
 end
 subsection Stage reduced
-  set End time = 0.1
+  set End time    = 0.4
+  set End at rest = true
+end
+subsection Quasi-static end
+  set Kinetic energy ratio = 1e-6
 end
 subsection Boundary left
   set Type = slip
@@ -294,13 +302,14 @@ subsection Damping
   set Local damping coefficient = 0.2
 end
 subsection Output
-  set Directory     = output-staged-reduction
   set Format        = none
   set Overwrite     = true
   set Time interval = 0.05
 end
 )";
-    auto              simulator = simulator_from_text<2>(text);
+    auto              simulator = simulator_from_text<2>(
+      text +
+      "subsection Output\nset Directory = output-staged-reduction\nend\n");
     simulator->reduce_strength(2.);
     // The largest plastic strain of the points below 0.9 m and above 1.1 m
     // at each output step.
@@ -343,5 +352,54 @@ end
                "of stage initial; below 0.9 m "
             << (second.first > 0. ? "plastic" : "elastic")
             << " at the end of stage reduced" << std::endl;
+
+    // The same column by Analysis = strength reduction at the factors 1 and
+    // 2 (a bracket of width 1 against a tolerance of 0.9: the analysis ends
+    // after them or one more). The second trial starts from the state the first
+    // wrote before stage reduced: it runs that stage only and must end as
+    // the run above, which ran both stages with the strength divided by 2.
+    ParameterHandler   prm;
+    const std::string  analysis_text = text + R"(
+set Analysis = strength reduction
+subsection Strength reduction
+  set Lower factor       = 1
+  set Upper factor       = 2
+  set Tolerance          = 0.9
+  set Displacement limit = 0.1
+end
+subsection Output
+  set Directory = output-staged-strength-reduction
+end
+)";
+    std::ostringstream quiet;
+    Simulator<2>::declare_parameters(prm, SubsectionNames::read(analysis_text));
+    prm.parse_input_from_string(analysis_text);
+    StrengthReduction<2> analysis(MPI_COMM_WORLD, quiet);
+    analysis.parse_parameters(prm);
+    analysis.run(prm);
+    const std::string trial = "output-staged-strength-reduction/trial-02";
+    const auto        trial_stages = read_stages(trial);
+    check(trial_stages.size() == 1 && trial_stages[0][2] == "reduced" &&
+            trial_stages[0][3] == reduction[1][3],
+          "the second trial has not started at stage reduced, in step " +
+            reduction[1][3]);
+    const auto last_row = [](const std::string &directory) {
+      std::ifstream in(directory + "/statistics.csv");
+      std::string   line, last;
+      while (std::getline(in, line))
+        if (!line.empty() && line[0] != '#')
+          last = line;
+      return last;
+    };
+    const std::string run_end   = last_row("output-staged-reduction");
+    const std::string trial_end = last_row(trial);
+    check(trial_stages[0] == reduction[1] && !run_end.empty() &&
+            trial_end == run_end,
+          "the second trial ends otherwise than the run: <" + trial_end +
+            "> against <" + run_end + ">");
+    deallog << "strength reduction from the state before stage reduced: the "
+               "trial at F = 2 starts at step "
+            << trial_stages[0][3] << " and ends as the run, every digit of "
+            << "its last statistics" << std::endl;
   }
 }

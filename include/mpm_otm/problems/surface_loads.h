@@ -108,6 +108,16 @@ namespace MpmOtm
     assign_points(MaterialPoints<dim> &points) const;
 
     /**
+     * Let the loads with @p acting true act and the others not (one flag
+     * per load, in the order of Surface loads): a load that does not act
+     * gives no force, also in the statistics, and its points keep their
+     * share of the surface. Every load acts until this is called (by a
+     * stage: Stage NAME/Surface loads).
+     */
+    void
+    set_acting(const std::vector<bool> &acting);
+
+    /**
      * Whether the point with @p properties carries a load.
      */
     bool
@@ -157,6 +167,8 @@ namespace MpmOtm
       Tensor<1, dim> normal;
       /// Its length (2D), area (3D) or 1 (1D).
       double measure = 0;
+      /// Whether it acts (set_acting()).
+      bool acting = true;
     };
 
     /**

@@ -121,14 +121,27 @@ namespace MpmOtm
 
     /**
      * Divide the strength of every material by @p factor
-     * (Material::reduce_strength()): a trial of a strength reduction, after
-     * setup() (whose initial stresses, e.g. a geostatic K0, keep the
-     * unreduced strengths) and before run(). In a staged run the strengths
-     * are divided at the start of the last stage, the earlier ones running
-     * with the full strengths. Once per run.
+     * (Material::reduce_strength()) at the start of the last stage (of the
+     * run, without Stages), the earlier stages and the initial stresses
+     * (e.g. a geostatic K0) keeping the full strengths: a trial of a
+     * strength reduction. Call after setup() and before run(); once per run.
      */
     void
     reduce_strength(const double factor);
+
+    /**
+     * The state from which the trials of a strength reduction start: with
+     * @p write, run() writes it, as a checkpoint into @p directory, at the
+     * start of the last stage (after the earlier stages, before the last
+     * stage's changes and the divided strengths; without Stages, before the
+     * first step); otherwise setup() reads it from there in place of the
+     * seeded points, and run() goes on with the last stage as the run that
+     * wrote it did. The two runs must have the same parameters but for the
+     * subsections Output and Checkpoint. Call before setup().
+     */
+    void
+    share_state_before_last_stage(const std::string &directory,
+                                  const bool         write);
 
     /**
      * The largest distance of a material point from its initial position,
@@ -218,10 +231,13 @@ namespace MpmOtm
     /**
      * Write a checkpoint after step @p step with the state of every part of
      * the run, including @p stepper's and @p energy_monitor's, and the
-     * stage: its number @p stage, first step and start time.
+     * stage: its number @p stage, first step and start time, into
+     * @p directory (the output directory, or the directory of the state
+     * before the last stage).
      */
     void
-    write_checkpoint(const unsigned int         step,
+    write_checkpoint(const std::string         &directory,
+                     const unsigned int         step,
                      const TimeStepper<dim>    &stepper,
                      const EnergyMonitor<dim>  &energy_monitor,
                      const std::vector<double> &stage);
@@ -282,8 +298,13 @@ namespace MpmOtm
     /// The stages (one for a run without Stages).
     std::unique_ptr<StagePlan<dim>> stage_plan;
     /// The factor that reduce_strength() leaves for the start of the last
-    /// stage of a staged run (1: none).
+    /// stage (1: none).
     double pending_strength_factor = 1;
+    /// share_state_before_last_stage(): the directory of the state before
+    /// the last stage (empty: none), and whether run() writes it (or
+    /// setup() has read it).
+    std::string state_before_last_stage;
+    bool        writes_state_before_last_stage = false;
     /// Volumetric locking remedy = automatic: the remedy is dropped where
     /// the shape functions leave it nothing to do.
     bool automatic_locking_remedy = false;

@@ -26,7 +26,8 @@ namespace MpmOtm
    * sequence of named periods, each with its end (an End time, or rest by
    * the quasi-static end) and what changes at its start: bodies removed
    * (an excavation) or added (a fill, seeded in its own initial state),
-   * displacements reset to zero, the local damping. Everything else (grid,
+   * displacements reset to zero, the local damping, the surface loads that
+   * act. Everything else (grid,
    * shape functions, method, materials, conditions) is that of the whole
    * run, so a stage subsection has no entry for it. A run without Stages
    * is one unnamed stage from t = 0 to Time/End time that ends at rest if
@@ -60,6 +61,8 @@ namespace MpmOtm
       bool reset_displacements = false;
       /// The local damping coefficient from its start; negative: unchanged.
       double damping_coefficient = -1;
+      /// Whether each surface load acts from its start; empty: unchanged.
+      std::vector<bool> acting_loads;
     };
 
     /**
@@ -120,7 +123,8 @@ namespace MpmOtm
      * Make the changes of stage @p stage at its start: remove the points of
      * its removed bodies, seed its added bodies (of @p problem, in their
      * initial state, a geostatic stress from the weight of the bodies then
-     * present), reset the displacements, set the damping of @p damping.
+     * present), reset the displacements, set the damping of @p damping and
+     * the surface loads of @p problem that act.
      * Collective. Returns a sentence on what changed, for the log.
      */
     std::string
@@ -131,11 +135,14 @@ namespace MpmOtm
           LocalDamping<dim>          &damping) const;
 
     /**
-     * Set @p damping as the stages up to and including @p stage left it: for
-     * a run resumed inside @p stage.
+     * Set @p damping and the surface loads of @p problem that act as the
+     * stages up to and including @p stage left them: for a run resumed
+     * inside @p stage, or started from the state before it.
      */
     void
-    restore_damping(const unsigned int stage, LocalDamping<dim> &damping) const;
+    restore(const unsigned int stage,
+            LocalDamping<dim> &damping,
+            Problem<dim>      &problem) const;
 
   private:
     std::vector<Stage> stage_list;

@@ -19,11 +19,14 @@ namespace MpmOtm
    * rest under its own weight is the largest factor by which its strengths
    * can be divided (Material::reduce_strength(): c / F and tan(phi) / F,
    * tan(psi) / F, or c_u / F) with the body still standing. Each trial is a
-   * whole run of the parameter file, in the same process: its points are
-   * seeded in the initial state (e.g. geostatic, with the unreduced
-   * strengths), the strengths are then divided by the trial's factor, and
-   * the run goes on until it comes to rest (subsection "Quasi-static end")
-   * or reaches its End time. A trial *fails* when a point has moved further
+   * run of the parameter file, in the same process, whose last stage (the
+   * run, without Stages) has the strengths divided by the trial's factor;
+   * it goes on until it comes to rest (subsection "Quasi-static end") or
+   * reaches its End time. The first trial seeds the points in their initial
+   * state (e.g. geostatic, with the unreduced strengths), runs the earlier
+   * stages and writes the state at the start of the last stage into
+   * Output/Directory/state-before-last-stage; every later trial starts from
+   * that state. A trial *fails* when a point has moved further
    * than the Displacement limit or the run has not come to rest by its End
    * time; it *stands* otherwise. The first two trials check that the Lower
    * factor stands and the Upper factor fails; bisection then halves the
