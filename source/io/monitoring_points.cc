@@ -2,6 +2,7 @@
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/utilities.h>
 
+#include <mpm_otm/base/checkpoint_state.h>
 #include <mpm_otm/base/collective_error.h>
 #include <mpm_otm/base/read_point.h>
 #include <mpm_otm/io/monitoring_points.h>
@@ -299,6 +300,31 @@ namespace MpmOtm
     if (step == 0 || last)
       return true;
     return interval == 0 ? output_step : step % interval == 0;
+  }
+
+
+
+  template <int dim>
+  void
+  MonitoringPoints<dim>::save(CheckpointState &state) const
+  {
+    state.set_shared("monitoring/ids",
+                     std::vector<double>(ids.begin(), ids.end()));
+  }
+
+
+
+  template <int dim>
+  void
+  MonitoringPoints<dim>::load(const CheckpointState &state)
+  {
+    const auto &stored = state.shared("monitoring/ids");
+    AssertThrow(stored.size() == names.size(),
+                ExcMessage("The checkpoint follows " +
+                           std::to_string(stored.size()) +
+                           " monitoring points, the parameters name " +
+                           std::to_string(names.size()) + "."));
+    ids.assign(stored.begin(), stored.end());
   }
 
 

@@ -284,8 +284,12 @@ namespace MpmOtm
         system->load(*resumed_state);
         boundary_conditions->load(*resumed_state);
       }
-    const std::string monitored =
-      monitoring->enabled() ? monitoring->locate(*points, communicator) : "";
+    // A continued run follows the points it followed before.
+    std::string monitored;
+    if (monitoring->enabled() && (resume || starts_from_state))
+      monitoring->load(*resumed_state);
+    else if (monitoring->enabled())
+      monitored = monitoring->locate(*points, communicator);
     output->initialize(prm,
                        problem_description->has_exact_solution(),
                        problem_description->has_exact_stress(),

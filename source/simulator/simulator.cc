@@ -404,6 +404,7 @@ namespace MpmOtm
     shape_functions->save(state);
     system->save(state);
     boundary_conditions->save(state);
+    monitoring->save(state);
     output->save(state);
     checkpoint
       ->write(directory, step, current_time, *points, state, communicator);

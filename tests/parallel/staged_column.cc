@@ -31,8 +31,11 @@
 //
 // Then the run is resumed from its checkpoint of step 200, inside the
 // excavation stage (the newer ones removed): it crosses into the backfill
-// stage, adds the fill and must end with every point and stages.csv equal
-// to the uninterrupted run's (bit by bit on the same number of ranks).
+// stage, adds the fill and must end with every point, stages.csv and
+// monitoring.csv equal to the uninterrupted run's (bit by bit on the same
+// number of ranks). Its monitoring points follow the points they followed
+// (one in the cut, gone since the excavation: nan), not the nearest ones at
+// the resume (none within reach of the cut's: the resume used to stop).
 //
 // Last, a strength reduction of a staged run divides the strengths at the
 // start of its last stage only: a von Mises column 4 m high (yield stress
@@ -137,7 +140,9 @@ main(int argc, char **argv)
   const std::string changes =
     "subsection Mesh\n set Subdivisions = 2, 13\nend\n"
     "subsection Checkpoint\n set Interval = 100\n"
-    " set Number kept = 10\nend\n";
+    " set Number kept = 10\nend\n"
+    "subsection Monitoring\n"
+    " set Points = top: 0.5, 4; middle: 0.5, 2; cut: 0.5, 5\nend\n";
   std::map<unsigned int, StepErrors>        at_step;
   std::map<types::particle_index, Point<2>> uninterrupted;
   {
@@ -148,7 +153,14 @@ main(int argc, char **argv)
     for (const auto &particle : simulator->material_points().particle_handler())
       uninterrupted[particle.get_id()] = particle.get_location();
   }
-  const auto stages = read_stages(directory);
+  const auto read_file = [](const std::string &name) {
+    std::ifstream     in(name);
+    std::stringstream contents;
+    contents << in.rdbuf();
+    return contents.str();
+  };
+  const std::string monitoring = read_file(directory + "/monitoring.csv");
+  const auto        stages     = read_stages(directory);
   check(stages.size() == 3, "stages.csv has not three stages");
   const char *names[3]  = {"initial", "excavation", "backfill"};
   const char *ending[3] = {"end time", "at rest", "at rest"};
@@ -239,8 +251,13 @@ main(int argc, char **argv)
   }
   check(read_stages(directory) == stages,
         "the resumed run's stages.csv differs from the uninterrupted run's");
-  deallog << "resumed at step 200 in stage excavation: every point and "
-             "stages.csv as in the uninterrupted run"
+  check(monitoring.find("nan") != std::string::npos &&
+          read_file(directory + "/monitoring.csv") == monitoring,
+        "the resumed run's monitoring.csv differs from the uninterrupted "
+        "run's, or the monitored point of the cut is not gone (nan)");
+  deallog << "resumed at step 200 in stage excavation: every point, "
+             "stages.csv and monitoring.csv (the cut's point nan once "
+             "removed) as in the uninterrupted run"
           << std::endl;
 
   {

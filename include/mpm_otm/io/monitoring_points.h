@@ -13,6 +13,7 @@ namespace MpmOtm
 {
   using namespace dealii;
 
+  class CheckpointState;
   template <int dim>
   class MaterialLibrary;
   template <int dim>
@@ -65,6 +66,21 @@ namespace MpmOtm
     std::string
     locate(const MaterialPoints<dim> &material_points,
            const MPI_Comm             communicator);
+
+    /**
+     * Store the material points that the monitoring points follow in
+     * @p state.
+     */
+    void
+    save(CheckpointState &state) const;
+
+    /**
+     * Follow the material points stored in @p state (in place of locate()
+     * for a run that continues from a checkpoint: the points it followed
+     * may have been removed by a stage since, or others added nearer).
+     */
+    void
+    load(const CheckpointState &state);
 
     /**
      * Write the header of monitoring.csv in @p directory (rank 0). A run
