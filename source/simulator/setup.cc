@@ -262,8 +262,7 @@ namespace MpmOtm
     Activity::set("reading the checkpoint");
     // A resumed run, or a trial of a strength reduction that starts from
     // the state before the last stage another trial wrote.
-    const bool starts_from_state =
-      !state_before_last_stage.empty() && !writes_state_before_last_stage;
+    const bool  starts_from_state = starts_from_stored_state();
     std::string resumed_from;
     if (resume || starts_from_state)
       {

@@ -175,7 +175,7 @@ namespace MpmOtm
           resumed_state.reset();
           // The state before the last stage was written before the stage
           // began.
-          resumed_inside_stage = state_before_last_stage.empty();
+          resumed_inside_stage = !starts_from_stored_state();
         }
       unsigned int step = resumed_step;
       // A checkpoint after this step, in this stage.
@@ -476,6 +476,15 @@ namespace MpmOtm
   {
     AssertThrow(factor > 0 && std::isfinite(factor), ExcInternalError());
     pending_strength_factor = factor;
+  }
+
+
+
+  template <int dim>
+  bool
+  Simulator<dim>::starts_from_stored_state() const
+  {
+    return !state_before_last_stage.empty() && !writes_state_before_last_stage;
   }
 
 

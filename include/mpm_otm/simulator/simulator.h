@@ -229,6 +229,13 @@ namespace MpmOtm
     reaction_names() const;
 
     /**
+     * Whether this run starts from the state before the last stage that
+     * another run wrote (share_state_before_last_stage() without write).
+     */
+    bool
+    starts_from_stored_state() const;
+
+    /**
      * Write a checkpoint after step @p step with the state of every part of
      * the run, including @p stepper's and @p energy_monitor's, and the
      * stage: its number @p stage, first step and start time, into
