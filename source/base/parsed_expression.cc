@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <regex>
 
 namespace MpmOtm
 {
@@ -47,6 +48,13 @@ namespace MpmOtm
     zero = std::all_of(parts.begin(), parts.end(), [](const std::string &part) {
       return part == "0";
     });
+    // A coordinate is a name of its own: an identifier that is x, y or z.
+    const std::regex identifier("[A-Za-z_][A-Za-z0-9_]*");
+    for (auto name = std::sregex_iterator(text.begin(), text.end(), identifier);
+         name != std::sregex_iterator();
+         ++name)
+      coordinates = coordinates || name->str() == "x" || name->str() == "y" ||
+                    name->str() == "z";
     function = std::make_unique<FunctionParser<dim>>(n_components);
     try
       {
@@ -94,6 +102,15 @@ namespace MpmOtm
   ParsedExpression<dim>::is_zero() const
   {
     return zero;
+  }
+
+
+
+  template <int dim>
+  bool
+  ParsedExpression<dim>::uses_coordinates() const
+  {
+    return coordinates;
   }
 
 

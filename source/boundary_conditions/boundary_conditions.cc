@@ -515,13 +515,18 @@ namespace MpmOtm
       {
         const std::array<bool, dim> components =
           condition->constrained_components();
-        if (std::none_of(components.begin(), components.end(), [](bool b) {
-              return b;
-            }))
+        if (std::none_of(components.begin(),
+                         components.end(),
+                         [](const bool fixed) {
+                           return fixed;
+                         }))
           continue;
-        const Tensor<1, dim> target = condition->target_velocity(time);
-        for (const unsigned int i : condition->where.functions)
+        const std::vector<unsigned int> &nodes = condition->where.functions;
+        node_values.resize(nodes.size());
+        condition->target_velocities(time, node_values);
+        for (unsigned int k = 0; k < nodes.size(); ++k)
           {
+            const unsigned int i = nodes[k];
             if (!(system.lumped_mass.local_element(i) > 0.))
               continue;
             const types::global_dof_index global =
@@ -530,8 +535,8 @@ namespace MpmOtm
               if (components[c])
                 {
                   constraints[c].add_line(global);
-                  constraints[c].set_inhomogeneity(global,
-                                                   value(i, c, target[c]));
+                  constraints[c]
+                    .set_inhomogeneity(global, value(i, c, node_values[k][c]));
                 }
           }
       }
@@ -569,17 +574,23 @@ namespace MpmOtm
       }
     for (unsigned int b = 0; b < conditions.size(); ++b)
       {
+        node_values.clear();
         Tensor<1, dim> reaction;
         if (conditions[b]->holds_nodes())
           for (const unsigned int i : conditions[b]->where.functions)
-            for (unsigned int c = 0; c < dim; ++c)
-              reaction[c] += inertia[c].local_element(i) -
-                             (system.force[c].local_element(i) -
-                              system.damping_force[c].local_element(i));
+            {
+              Tensor<1, dim> node_reaction;
+              for (unsigned int c = 0; c < dim; ++c)
+                node_reaction[c] = inertia[c].local_element(i) -
+                                   (system.force[c].local_element(i) -
+                                    system.damping_force[c].local_element(i));
+              node_values.push_back(node_reaction);
+              reaction += node_reaction;
+            }
         reaction += loads[b];
         reaction_sums[b] += reaction;
         work_of_prescribed_velocities +=
-          conditions[b]->advance(reaction, time, dt);
+          conditions[b]->advance(node_values, time, dt);
         ++n_steps[b];
       }
   }

@@ -1,5 +1,7 @@
 #include <mpm_otm/boundary_conditions/condition.h>
 
+#include <algorithm>
+
 namespace MpmOtm
 {
   template <int dim>
@@ -62,10 +64,11 @@ namespace MpmOtm
 
 
   template <int dim>
-  Tensor<1, dim>
-  Condition<dim>::target_velocity(const double) const
+  void
+  Condition<dim>::target_velocities(const double,
+                                    std::vector<Tensor<1, dim>> &targets) const
   {
-    return Tensor<1, dim>();
+    std::fill(targets.begin(), targets.end(), Tensor<1, dim>());
   }
 
 
@@ -115,7 +118,9 @@ namespace MpmOtm
 
   template <int dim>
   double
-  Condition<dim>::advance(const Tensor<1, dim> &, const double, const double)
+  Condition<dim>::advance(const std::vector<Tensor<1, dim>> &,
+                          const double,
+                          const double)
   {
     return 0.;
   }

@@ -1,5 +1,8 @@
+#include <deal.II/base/partitioner.h>
+
 #include <mpm_otm/base/plugins.h>
 #include <mpm_otm/boundary_conditions/velocity_condition.h>
+#include <mpm_otm/shape_functions/shape_functions.h>
 
 #include <algorithm>
 #include <sstream>
@@ -14,8 +17,9 @@ namespace MpmOtm
     prm.declare_entry("Velocity",
                       zeros,
                       Patterns::Anything(),
-                      "Type = velocity: dim expressions in t (m/s), "
-                      "separated by ';'.");
+                      "Type = velocity: dim expressions (m/s), separated "
+                      "by ';', in t, and on Boundary ids also in the "
+                      "coordinates x, y, z of each node at the start.");
     prm.declare_entry("Velocity components",
                       std::string("xyz").substr(0, 1) + (dim > 1 ? ", y" : "") +
                         (dim > 2 ? ", z" : ""),
@@ -42,14 +46,74 @@ namespace MpmOtm
                                std::to_string(dim) + "D."));
         components[c] = true;
       }
-    // The velocity is a function of time only (the condition's nodes move
-    // as one).
-    velocity = std::make_unique<ParsedExpression<dim>>(prm.get("Velocity"),
+    const std::string text = prm.get("Velocity");
+    velocity               = std::make_unique<ParsedExpression<dim>>(text,
                                                        dim,
                                                        true,
-                                                       path + "Velocity",
-                                                       false);
+                                                       path + "Velocity");
+    depends_on_position    = velocity->uses_coordinates();
+    AssertThrow(!(depends_on_position && this->where.on_box),
+                ExcMessage(path + "Velocity: <" + text +
+                           "> depends on the coordinates, but the condition "
+                           "acts on the nodes in a box, which move as one "
+                           "with the box: give a function of t only, or "
+                           "Boundary ids for a velocity that varies along "
+                           "the sides."));
     velocity->vector_value(Point<dim>(), 0.);
+  }
+
+
+
+  template <int dim>
+  void
+  VelocityCondition<dim>::initialize(const ShapeFunctions<dim> &shape_functions)
+  {
+    communicator =
+      shape_functions.dof_handler().get_triangulation().get_communicator();
+    if (!depends_on_position)
+      return;
+    const Utilities::MPI::Partitioner partitioner(
+      shape_functions.locally_owned_functions(),
+      shape_functions.locally_relevant_functions(),
+      communicator);
+    std::vector<Point<dim>> points;
+    const bool found = shape_functions.function_points(partitioner, points);
+    AssertThrow(Utilities::MPI::min(found ? 1 : 0, communicator) == 1,
+                ExcMessage(this->where.path() +
+                           "Velocity depends on the coordinates, but these "
+                           "shape functions do not belong to points at "
+                           "which to evaluate it (Powell-Sabin splines "
+                           "combine three functions per vertex). Give a "
+                           "function of t only, or use Shape functions = "
+                           "linear, B-spline or max-ent."));
+    node_positions.clear();
+    Tensor<1, dim> sum;
+    for (const unsigned int i : this->where.functions)
+      {
+        node_positions.push_back(points[i]);
+        sum += points[i];
+      }
+    const double n_nodes =
+      Utilities::MPI::sum(static_cast<double>(node_positions.size()),
+                          communicator);
+    sum = Utilities::MPI::sum(sum, communicator);
+    if (n_nodes > 0.)
+      centroid = Point<dim>(sum / n_nodes);
+  }
+
+
+
+  template <int dim>
+  Tensor<1, dim>
+  VelocityCondition<dim>::prescribed(const Point<dim> &position,
+                                     const double      time) const
+  {
+    Tensor<1, dim>       result;
+    const Tensor<1, dim> value = velocity->vector_value(position, time);
+    for (unsigned int d = 0; d < dim; ++d)
+      if (components[d])
+        result[d] = value[d];
+    return result;
   }
 
 
@@ -62,25 +126,30 @@ namespace MpmOtm
     if (where.on_box || !where.fixed_grid || where.normal.norm() == 0.)
       return;
     // The displacement of the prescribed components against the outward
-    // normal, by the trapezoidal rule, and its largest value in the run.
-    const auto inward_velocity = [&](const double t) {
-      const Tensor<1, dim> value  = velocity->vector_value(Point<dim>(), t);
-      double               inward = 0.;
-      for (unsigned int d = 0; d < dim; ++d)
-        if (components[d])
-          inward -= value[d] * where.normal[d];
-      return inward;
-    };
+    // normal, by the trapezoidal rule, and its largest value in the run, at
+    // each node (a Velocity of time only: at any one).
+    const std::vector<Point<dim>> positions =
+      depends_on_position ? node_positions :
+                            std::vector<Point<dim>>(1, Point<dim>());
     const unsigned int n_intervals = 10000;
     const double       dt          = end_time / n_intervals;
-    double previous = inward_velocity(0.), travel = 0., largest = 0.;
-    for (unsigned int i = 1; i <= n_intervals; ++i)
+    double             largest     = 0.;
+    for (const Point<dim> &position : positions)
       {
-        const double current = inward_velocity(i * dt);
-        travel += 0.5 * dt * (previous + current);
-        largest  = std::max(largest, travel);
-        previous = current;
+        const auto inward_velocity = [&](const double t) {
+          return -prescribed(position, t) * where.normal;
+        };
+        double previous = inward_velocity(0.), travel = 0.;
+        for (unsigned int i = 1; i <= n_intervals; ++i)
+          {
+            const double current = inward_velocity(i * dt);
+            travel += 0.5 * dt * (previous + current);
+            largest  = std::max(largest, travel);
+            previous = current;
+          }
       }
+    if (depends_on_position)
+      largest = Utilities::MPI::max(largest, communicator);
     std::ostringstream message;
     message << "Boundary " << where.name
             << "/Velocity moves the grid side of its Boundary ids " << largest
@@ -110,16 +179,16 @@ namespace MpmOtm
 
 
   template <int dim>
-  Tensor<1, dim>
-  VelocityCondition<dim>::target_velocity(const double time) const
+  void
+  VelocityCondition<dim>::target_velocities(
+    const double                 time,
+    std::vector<Tensor<1, dim>> &targets) const
   {
-    Tensor<1, dim>       result;
-    const Tensor<1, dim> prescribed =
-      velocity->vector_value(Point<dim>(), time);
-    for (unsigned int d = 0; d < dim; ++d)
-      if (components[d])
-        result[d] = prescribed[d];
-    return result;
+    if (depends_on_position)
+      for (unsigned int k = 0; k < targets.size(); ++k)
+        targets[k] = prescribed(node_positions[k], time);
+    else
+      std::fill(targets.begin(), targets.end(), prescribed(Point<dim>(), time));
   }
 
 
@@ -135,19 +204,30 @@ namespace MpmOtm
 
   template <int dim>
   double
-  VelocityCondition<dim>::advance(const Tensor<1, dim> &reaction,
-                                  const double          time,
-                                  const double          dt)
+  VelocityCondition<dim>::advance(
+    const std::vector<Tensor<1, dim>> &node_reactions,
+    const double                       time,
+    const double                       dt)
   {
-    const Tensor<1, dim> prescribed =
-      velocity->vector_value(Point<dim>(), time + dt);
-    double work = 0.;
-    for (unsigned int d = 0; d < dim; ++d)
-      if (components[d])
-        {
-          this->where.displacement[d] += dt * prescribed[d];
-          work += dt * reaction[d] * prescribed[d];
-        }
+    double     work        = 0.;
+    const auto add_work_of = [&](const Tensor<1, dim> &reaction,
+                                 const Tensor<1, dim> &velocity) {
+      for (unsigned int d = 0; d < dim; ++d)
+        work += dt * reaction[d] * velocity[d];
+    };
+    if (depends_on_position)
+      for (unsigned int k = 0; k < node_reactions.size(); ++k)
+        add_work_of(node_reactions[k],
+                    prescribed(node_positions[k], time + dt));
+    else
+      {
+        Tensor<1, dim> reaction;
+        for (const Tensor<1, dim> &node_reaction : node_reactions)
+          reaction += node_reaction;
+        add_work_of(reaction, prescribed(Point<dim>(), time + dt));
+      }
+    this->where.displacement +=
+      dt * prescribed(depends_on_position ? centroid : Point<dim>(), time + dt);
     return std::max(work, 0.);
   }
 

@@ -66,6 +66,12 @@ namespace MpmOtm
     is_zero() const;
 
     /**
+     * Whether some expression names a coordinate (x, y or z).
+     */
+    bool
+    uses_coordinates() const;
+
+    /**
      * The variables the expressions may use, e.g. "x, y, t".
      */
     std::string
@@ -75,7 +81,8 @@ namespace MpmOtm
     std::string                          entry;
     bool                                 time_dependent;
     bool                                 space_dependent;
-    bool                                 zero = false;
+    bool                                 zero        = false;
+    bool                                 coordinates = false;
     std::unique_ptr<FunctionParser<dim>> function;
   };
 } // namespace MpmOtm

@@ -248,8 +248,8 @@ namespace MpmOtm
      * Set @p constraints to the system's NodalSystem::constraints() and add
      * a line per component that a condition fixes on each of its nodes with
      * mass, with the inhomogeneity @p value(i, c, target) for the local
-     * index i, the component c and the condition's target velocity at
-     * @p time.
+     * index i, the component c and the condition's target velocity at the
+     * node at @p time.
      */
     void
     add_prescribed_lines(
@@ -274,6 +274,8 @@ namespace MpmOtm
     std::vector<Tensor<1, dim>> loads;
     /// Per condition, the number of steps summed.
     std::vector<unsigned int> n_steps;
+    /// Scratch: a condition's target velocities or reactions at its nodes.
+    mutable std::vector<Tensor<1, dim>> node_values;
     /// M a, per component, for the reactions.
     std::array<LinearAlgebra::distributed::Vector<double>, dim> inertia;
     double                     work_of_prescribed_velocities = 0.;

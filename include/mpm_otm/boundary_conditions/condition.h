@@ -81,9 +81,9 @@ namespace MpmOtm
    *
    * - loads: forces added to the nodes in particle-to-grid (add_loads());
    * - constraints: the components it fixes by an affine constraint and their
-   *   target velocity, which the manager adds as a_i = (v_target - v_i) / dt
-   *   to the solve for the accelerations and as v_i = v_target to the solves
-   *   for the velocities of the end of the step;
+   *   target velocity at each node, which the manager adds as a_i = (v_target -
+   * v_i) / dt to the solve for the accelerations and as v_i = v_target to the
+   * solves for the velocities of the end of the step;
    * - prepare(): what it measures before the corrections (friction: the gap
    *   between wall and material);
    * - correct_accelerations() and correct_velocities(): what is not affine
@@ -162,10 +162,13 @@ namespace MpmOtm
     constrained_components() const;
 
     /**
-     * The velocity of the constrained components at @p time.
+     * The velocity of the constrained components at @p time at each of the
+     * condition's nodes: @p targets[k] for the function where.functions[k]
+     * (@p targets has that size).
      */
-    virtual Tensor<1, dim>
-    target_velocity(const double time) const;
+    virtual void
+    target_velocities(const double                 time,
+                      std::vector<Tensor<1, dim>> &targets) const;
 
     /**
      * The components fixed to zero on whole grid sides, for the
@@ -209,12 +212,15 @@ namespace MpmOtm
 
     /**
      * Advance the condition's state over the step from @p time to @p time +
-     * @p dt in which it exerted the force @p reaction (this rank's part) on
-     * the material. Returns the positive part of the work it did on this
-     * rank's nodes.
+     * @p dt in which it exerted the force @p node_reactions[k] on the
+     * material at the node where.functions[k] (a condition that holds_nodes();
+     * empty for one that does not). Returns the positive part of the work it
+     * did on this rank's nodes.
      */
     virtual double
-    advance(const Tensor<1, dim> &reaction, const double time, const double dt);
+    advance(const std::vector<Tensor<1, dim>> &node_reactions,
+            const double                       time,
+            const double                       dt);
 
     /**
      * Where the condition acts.

@@ -10,11 +10,14 @@ namespace MpmOtm
 {
   /**
    * Type = velocity: the components 'Velocity components' prescribed to
-   * 'Velocity' (functions of time; the condition's nodes move as one), the
-   * others free. A box of prescribed velocity moves with the displacement it
-   * prescribes (a settling footing, a moving platen): every step it acts on
-   * the nodes inside the moved box. The work it does is counted in the
-   * energy balance.
+   * 'Velocity', the others free. A box of prescribed velocity moves as one
+   * with the displacement it prescribes (a settling footing, a moving
+   * platen), so its Velocity is a function of time: every step it acts on
+   * the nodes inside the moved box. On grid sides the Velocity may also
+   * depend on the position each node has at the start (a wave front that
+   * sweeps along the side, a side that rotates); its displacement in the
+   * statistics is then that of the centroid of the side's nodes. The work
+   * it does is counted in the energy balance.
    */
   template <int dim>
   class VelocityCondition : public Condition<dim>
@@ -28,6 +31,14 @@ namespace MpmOtm
 
     void
     parse_parameters(ParameterHandler &prm) override;
+
+    /**
+     * For a Velocity that depends on position: the position of each node,
+     * from the family's function_points() (refused for a family whose
+     * functions do not belong to points), and their centroid. Collective.
+     */
+    void
+    initialize(const ShapeFunctions<dim> &shape_functions) override;
 
     /**
      * Refuse a condition on grid sides whose prescribed motion takes it
@@ -45,8 +56,9 @@ namespace MpmOtm
     std::array<bool, dim>
     constrained_components() const override;
 
-    Tensor<1, dim>
-    target_velocity(const double time) const override;
+    void
+    target_velocities(const double                 time,
+                      std::vector<Tensor<1, dim>> &targets) const override;
 
     bool
     moves() const override;
@@ -56,13 +68,28 @@ namespace MpmOtm
      * return the positive part of the work the reaction did.
      */
     double
-    advance(const Tensor<1, dim> &reaction,
-            const double          time,
-            const double          dt) override;
+    advance(const std::vector<Tensor<1, dim>> &node_reactions,
+            const double                       time,
+            const double                       dt) override;
 
   private:
+    /**
+     * The prescribed components of the Velocity at @p position and
+     * @p time, the others zero.
+     */
+    Tensor<1, dim>
+    prescribed(const Point<dim> &position, const double time) const;
+
     std::array<bool, dim>                  components{};
     std::unique_ptr<ParsedExpression<dim>> velocity;
+    /// Whether the Velocity uses the coordinates.
+    bool depends_on_position = false;
+    /// The position at the start of each node where.functions[k] (only for
+    /// a Velocity that depends on position).
+    std::vector<Point<dim>> node_positions;
+    /// The centroid of all ranks' nodes, where the displacement is taken.
+    Point<dim> centroid;
+    MPI_Comm   communicator = MPI_COMM_WORLD;
   };
 } // namespace MpmOtm
 
