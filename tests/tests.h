@@ -18,6 +18,7 @@
 #include <memory>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace MpmOtmTests
 {
@@ -45,6 +46,23 @@ namespace MpmOtmTests
   check(const bool condition, const std::string &message)
   {
     AssertThrow(condition, ExcMessage("Test check failed: " + message));
+  }
+
+  /**
+   * The rows of stages.csv in the Output/Directory @p directory of a staged
+   * run, without the header, each split at its commas: step (the stage's
+   * last), stage, name, first_step, start_time, end_time, end.
+   */
+  inline std::vector<std::vector<std::string>>
+  stage_rows(const std::string &directory)
+  {
+    std::ifstream                         file(directory + "/stages.csv");
+    std::string                           line;
+    std::vector<std::vector<std::string>> rows;
+    std::getline(file, line);
+    while (std::getline(file, line))
+      rows.push_back(Utilities::split_string_list(line, ','));
+    return rows;
   }
 
   /**

@@ -153,6 +153,7 @@ namespace MpmOtm
     reaction_sums.assign(conditions.size(), Tensor<1, dim>());
     loads.assign(conditions.size(), Tensor<1, dim>());
     n_steps.assign(conditions.size(), 0);
+    acting.assign(conditions.size(), true);
   }
 
 
@@ -436,10 +437,33 @@ namespace MpmOtm
   BoundaryConditions<dim>::fixed_components() const
   {
     std::vector<FixedComponents<dim>> result;
-    for (const auto &condition : conditions)
-      if (!condition->where.on_box)
-        for (const auto &fixed : condition->fixed_components())
+    for (unsigned int b = 0; b < conditions.size(); ++b)
+      if (acting[b] && !conditions[b]->where.on_box)
+        for (const auto &fixed : conditions[b]->fixed_components())
           result.push_back(fixed);
+    return result;
+  }
+
+
+
+  template <int dim>
+  void
+  BoundaryConditions<dim>::set_acting(const std::vector<bool> &acts)
+  {
+    AssertDimension(acts.size(), conditions.size());
+    acting = acts;
+  }
+
+
+
+  template <int dim>
+  std::vector<std::string>
+  BoundaryConditions<dim>::acting_names() const
+  {
+    std::vector<std::string> result;
+    for (unsigned int b = 0; b < conditions.size(); ++b)
+      if (acting[b])
+        result.push_back(conditions[b]->where.name);
     return result;
   }
 
@@ -452,7 +476,8 @@ namespace MpmOtm
                                      const double      dt)
   {
     for (unsigned int b = 0; b < conditions.size(); ++b)
-      loads[b] = conditions[b]->add_loads(system, time, dt);
+      loads[b] = acting[b] ? conditions[b]->add_loads(system, time, dt) :
+                             Tensor<1, dim>();
   }
 
 
@@ -466,9 +491,9 @@ namespace MpmOtm
     typename NodalSystem<dim>::Constraints &constraints)
   {
     // A box that moves finds its nodes at its new place.
-    for (auto &condition : conditions)
-      if (condition->where.on_box && condition->moves())
-        find_box_functions(condition->where);
+    for (unsigned int b = 0; b < conditions.size(); ++b)
+      if (acting[b] && conditions[b]->where.on_box && conditions[b]->moves())
+        find_box_functions(conditions[b]->where);
     add_prescribed_lines(
       system,
       time + dt,
@@ -511,8 +536,11 @@ namespace MpmOtm
     for (unsigned int c = 0; c < dim; ++c)
       constraints[c].copy_from(system.constraints()[c]);
     const Utilities::MPI::Partitioner &partitioner = system.partitioner();
-    for (const auto &condition : conditions)
+    for (unsigned int b = 0; b < conditions.size(); ++b)
       {
+        if (!acting[b])
+          continue;
+        const auto                 &condition = conditions[b];
         const std::array<bool, dim> components =
           condition->constrained_components();
         if (std::none_of(components.begin(),
@@ -556,10 +584,12 @@ namespace MpmOtm
   {
     if (conditions.empty())
       return;
-    for (auto &condition : conditions)
-      condition->prepare(material_points, shape_data, system);
-    for (auto &condition : conditions)
-      condition->correct_accelerations(system, time, dt);
+    for (unsigned int b = 0; b < conditions.size(); ++b)
+      if (acting[b])
+        conditions[b]->prepare(material_points, shape_data, system);
+    for (unsigned int b = 0; b < conditions.size(); ++b)
+      if (acting[b])
+        conditions[b]->correct_accelerations(system, time, dt);
     // The reactions once every condition has acted (a node shared by two
     // conditions counts in both).
     for (unsigned int c = 0; c < dim; ++c)
@@ -572,8 +602,13 @@ namespace MpmOtm
                           system.acceleration[c],
                           inertia[c]);
       }
+    // A condition that does not act has no reaction (which counts in the
+    // mean over the output's window) and stays where it is.
     for (unsigned int b = 0; b < conditions.size(); ++b)
       {
+        ++n_steps[b];
+        if (!acting[b])
+          continue;
         node_values.clear();
         Tensor<1, dim> reaction;
         if (conditions[b]->holds_nodes())
@@ -591,7 +626,6 @@ namespace MpmOtm
         reaction_sums[b] += reaction;
         work_of_prescribed_velocities +=
           conditions[b]->advance(node_values, time, dt);
-        ++n_steps[b];
       }
   }
 
@@ -602,8 +636,9 @@ namespace MpmOtm
   BoundaryConditions<dim>::correct_velocities(NodalSystem<dim> &system,
                                               const double      time) const
   {
-    for (const auto &condition : conditions)
-      condition->correct_velocities(system, time);
+    for (unsigned int b = 0; b < conditions.size(); ++b)
+      if (acting[b])
+        conditions[b]->correct_velocities(system, time);
   }
 
 

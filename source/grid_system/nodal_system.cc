@@ -38,13 +38,23 @@ namespace MpmOtm
         damping_force[c].reinit(index_partition);
         acceleration[c].reinit(index_partition);
         velocity[c].reinit(index_partition);
-        fixed[c].clear();
       }
+    set_fixed_components(fixed_components);
+  }
 
+
+
+  template <int dim>
+  void
+  NodalSystem<dim>::set_fixed_components(
+    const std::vector<FixedComponents<dim>> &fixed_components)
+  {
+    for (auto &list : fixed)
+      list.clear();
     for (const auto &condition : fixed_components)
       {
         const IndexSet on_boundary =
-          shape_functions.boundary_functions(condition.boundary_id);
+          shape_functions->boundary_functions(condition.boundary_id);
         for (const auto global : on_boundary)
           if (index_partition->in_local_range(global))
             for (unsigned int c = 0; c < dim; ++c)

@@ -91,6 +91,16 @@ namespace MpmOtm
 
 
   template <int dim>
+  void
+  Problem<dim>::set_gravity(const Tensor<1, dim> &g)
+  {
+    gravity_vector    = g;
+    gravity_ramp_time = 0.;
+  }
+
+
+
+  template <int dim>
   unsigned int
   Problem<dim>::n_bodies() const
   {

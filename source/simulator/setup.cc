@@ -295,7 +295,8 @@ namespace MpmOtm
                        communicator,
                        *materials,
                        reaction_names(),
-                       problem_description->has_gravity(),
+                       problem_description->has_gravity() ||
+                         stage_plan->sets_gravity(),
                        resume ? resumed_step : 0);
     if (resume)
       output->load(*resumed_state);

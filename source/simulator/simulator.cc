@@ -171,7 +171,11 @@ namespace MpmOtm
           stage_number     = static_cast<unsigned int>(stage[0]);
           stage_first_step = static_cast<unsigned int>(stage[1]);
           stage_start_time = stage[2];
-          stage_plan->restore(stage_number, *damping, *problem_description);
+          stage_plan->restore(stage_number,
+                              *damping,
+                              *problem_description,
+                              *boundary_conditions,
+                              *system);
           resumed_state.reset();
           // The state before the last stage was written before the stage
           // began.
@@ -212,7 +216,9 @@ namespace MpmOtm
                                         *points,
                                         *problem_description,
                                         *materials,
-                                        *damping) :
+                                        *damping,
+                                        *boundary_conditions,
+                                        *system) :
                              std::string();
                   if (last_stage && pending_strength_factor != 1.)
                     {

@@ -2,7 +2,9 @@
 #include <deal.II/base/utilities.h>
 
 #include <mpm_otm/base/subsection_names.h>
+#include <mpm_otm/boundary_conditions/boundary_conditions.h>
 #include <mpm_otm/grid_system/local_damping.h>
+#include <mpm_otm/grid_system/nodal_system.h>
 #include <mpm_otm/material_points/material_points.h>
 #include <mpm_otm/material_points/property_layout.h>
 #include <mpm_otm/material_points/seeding_bodies.h>
@@ -125,6 +127,19 @@ namespace MpmOtm
                              advice));
       return found - names.begin();
     }
+
+    /**
+     * The gravity that @p stage sets (dim values).
+     */
+    template <int dim>
+    Tensor<1, dim>
+    gravity_of(const typename StagePlan<dim>::Stage &stage)
+    {
+      Tensor<1, dim> g;
+      for (unsigned int d = 0; d < dim; ++d)
+        g[d] = stage.gravity[d];
+      return g;
+    }
   } // namespace
 
 
@@ -185,6 +200,25 @@ namespace MpmOtm
                           "damping coefficient before any stage sets it). "
                           "Empty: unchanged.");
         prm.declare_entry(
+          "Gravity",
+          "",
+          Patterns::Anything(),
+          "The gravitational acceleration (m/s^2) from the start of this "
+          "stage on, one value per direction as Gravity/Vector (e.g. '1.47, "
+          "-9.81' for a pseudo-static horizontal seismic coefficient of "
+          "0.15), applied at once. Empty: unchanged.");
+        prm.declare_entry(
+          "Boundaries",
+          "",
+          Patterns::List(Patterns::Anything()),
+          "The boundary conditions (names in Boundaries) that act from the "
+          "start of this stage on, 'none' for none; the others leave their "
+          "nodes free, have no reaction (0 in statistics.csv) and do not "
+          "move. Empty: those of the stage before (every condition, before "
+          "a stage names them). A prescribed Velocity is evaluated at the "
+          "time t of the run. The problem's own fixed components (Custom "
+          "problem/Fixed components) always act.");
+        prm.declare_entry(
           "Surface loads",
           "",
           Patterns::List(Patterns::Anything()),
@@ -210,7 +244,8 @@ namespace MpmOtm
     const auto names      = SubsectionNames::names_in(prm, "Stages");
     const auto body_names = SubsectionNames::names_in(prm, "Bodies");
     const auto load_names = SubsectionNames::names_in(prm, "Surface loads");
-    named                 = !names.empty();
+    const auto condition_names = SubsectionNames::names_in(prm, "Boundaries");
+    named                      = !names.empty();
     prm.enter_subsection("Time");
     const std::string time    = prm.get("End time");
     const double      run_end = prm.get_double("End time");
@@ -332,6 +367,33 @@ namespace MpmOtm
                         ExcMessage(damping_entry + " = " + damping +
                                    ": must lie in [0, 1)."));
           }
+        const std::string gravity_entry = "Stage " + name + "/Gravity";
+        for (const auto &value :
+             Utilities::split_string_list(prm.get("Gravity"), ','))
+          stage.gravity.push_back(number_in(value, gravity_entry));
+        AssertThrow(stage.gravity.size() <= 1 || stage.gravity.size() == dim,
+                    ExcMessage(gravity_entry + " = " + prm.get("Gravity") +
+                               ": give one value per direction (" +
+                               std::to_string(dim) +
+                               "), one for every direction, or none "
+                               "(unchanged)."));
+        if (stage.gravity.size() == 1)
+          stage.gravity.assign(dim, stage.gravity[0]);
+        const std::string acting = Utilities::trim(prm.get("Boundaries"));
+        if (!acting.empty())
+          {
+            stage.acting_conditions.assign(condition_names.size(), false);
+            if (acting != "none")
+              for (const auto &condition :
+                   Utilities::split_string_list(acting, ','))
+                stage.acting_conditions[place_in(
+                  condition_names,
+                  condition,
+                  "Stage " + name + "/Boundaries: <" + condition +
+                    "> is not a boundary condition; the conditions (entry "
+                    "Boundaries) are: ",
+                  " Write none for none.")] = true;
+          }
         const std::string loads = Utilities::trim(prm.get("Surface loads"));
         if (!loads.empty())
           {
@@ -381,6 +443,23 @@ namespace MpmOtm
 
 
   template <int dim>
+  bool
+  StagePlan<dim>::sets_gravity() const
+  {
+    return std::any_of(stage_list.begin(),
+                       stage_list.end(),
+                       [](const Stage &stage) {
+                         return std::any_of(stage.gravity.begin(),
+                                            stage.gravity.end(),
+                                            [](const double g) {
+                                              return g != 0.;
+                                            });
+                       });
+  }
+
+
+
+  template <int dim>
   std::string
   StagePlan<dim>::end_time_entry() const
   {
@@ -424,12 +503,30 @@ namespace MpmOtm
 
 
   template <int dim>
+  void
+  StagePlan<dim>::set_acting_conditions(const std::vector<bool> &acting,
+                                        const Problem<dim>      &problem,
+                                        BoundaryConditions<dim> &conditions,
+                                        NodalSystem<dim>        &system) const
+  {
+    conditions.set_acting(acting);
+    auto fixed = problem.fixed_components();
+    for (const auto &condition_fixed : conditions.fixed_components())
+      fixed.push_back(condition_fixed);
+    system.set_fixed_components(fixed);
+  }
+
+
+
+  template <int dim>
   std::string
   StagePlan<dim>::begin(const unsigned int          stage_number,
                         MaterialPoints<dim>        &points,
                         Problem<dim>               &problem,
                         const MaterialLibrary<dim> &materials,
-                        LocalDamping<dim>          &damping) const
+                        LocalDamping<dim>          &damping,
+                        BoundaryConditions<dim>    &conditions,
+                        NodalSystem<dim>           &system) const
   {
     const BodySeeder<dim> bodies(problem, materials);
     problem.set_present_bodies(present_in_stage.at(stage_number));
@@ -443,6 +540,14 @@ namespace MpmOtm
       return text;
     };
     std::ostringstream changes;
+    if (!stage.gravity.empty())
+      {
+        problem.set_gravity(gravity_of<dim>(stage));
+        changes << "gravity (" << Utilities::to_string(stage.gravity[0]);
+        for (unsigned int d = 1; d < dim; ++d)
+          changes << ", " << Utilities::to_string(stage.gravity[d]);
+        changes << ") m/s^2; ";
+      }
     if (!stage.removed_bodies.empty())
       {
         std::vector<typename Particles::ParticleHandler<dim>::particle_iterator>
@@ -482,6 +587,18 @@ namespace MpmOtm
         changes << "local damping coefficient " << stage.damping_coefficient
                 << "; ";
       }
+    if (!stage.acting_conditions.empty())
+      {
+        set_acting_conditions(stage.acting_conditions,
+                              problem,
+                              conditions,
+                              system);
+        std::string acting;
+        for (const auto &name : conditions.acting_names())
+          acting += (acting.empty() ? "" : ", ") + name;
+        changes << "boundary conditions acting: "
+                << (acting.empty() ? std::string("none") : acting) << "; ";
+      }
     if (!stage.acting_loads.empty())
       {
         problem.surface_loads().set_acting(stage.acting_loads);
@@ -501,9 +618,11 @@ namespace MpmOtm
 
   template <int dim>
   void
-  StagePlan<dim>::restore(const unsigned int stage,
-                          LocalDamping<dim> &damping,
-                          Problem<dim>      &problem) const
+  StagePlan<dim>::restore(const unsigned int       stage,
+                          LocalDamping<dim>       &damping,
+                          Problem<dim>            &problem,
+                          BoundaryConditions<dim> &conditions,
+                          NodalSystem<dim>        &system) const
   {
     for (unsigned int k = 0; k <= stage && k < stage_list.size(); ++k)
       {
@@ -511,6 +630,13 @@ namespace MpmOtm
           damping.set_coefficient(stage_list[k].damping_coefficient);
         if (!stage_list[k].acting_loads.empty())
           problem.surface_loads().set_acting(stage_list[k].acting_loads);
+        if (!stage_list[k].gravity.empty())
+          problem.set_gravity(gravity_of<dim>(stage_list[k]));
+        if (!stage_list[k].acting_conditions.empty())
+          set_acting_conditions(stage_list[k].acting_conditions,
+                                problem,
+                                conditions,
+                                system);
       }
   }
 

@@ -258,14 +258,10 @@ end
       here.loaded   = Utilities::MPI::max(here.loaded, MPI_COMM_WORLD);
       at_step[step] = here;
     });
-    std::ifstream stages("output-surface-load-stages/stages.csv");
-    std::string   line;
-    std::getline(stages, line);
     std::vector<AtStep> ends;
     std::string         how_ended;
-    while (std::getline(stages, line))
+    for (const auto &row : stage_rows("output-surface-load-stages"))
       {
-        const auto row = Utilities::split_string_list(line, ',');
         ends.push_back(at_step.at(std::stoul(row[0])));
         how_ended += (how_ended.empty() ? "" : ", ") + row[2] + ": " + row[6];
       }

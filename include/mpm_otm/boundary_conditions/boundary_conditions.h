@@ -114,11 +114,28 @@ namespace MpmOtm
           const BackgroundGrid<dim> &grid);
 
     /**
-     * The conditions that fix whole components on sides normal to a
+     * The acting conditions that fix whole components on sides normal to a
      * coordinate direction, for the mass-matrix solves.
      */
     std::vector<FixedComponents<dim>>
     fixed_components() const;
+
+    /**
+     * Let the conditions act for which @p acts (one value per condition, in
+     * the order of "Boundaries") is true, from the next step on (a stage;
+     * every condition acts until then). A condition that does not act
+     * leaves its nodes free, adds no load, has no reaction and does not
+     * move; its fixed_components() are left out, so the NodalSystem's
+     * Dirichlet lists must be set again.
+     */
+    void
+    set_acting(const std::vector<bool> &acts);
+
+    /**
+     * The names of the conditions that act.
+     */
+    std::vector<std::string>
+    acting_names() const;
 
     /**
      * Stop if a condition cannot hold until @p end_time (Condition::
@@ -266,6 +283,8 @@ namespace MpmOtm
     find_box_functions(ConditionNodes<dim> &where) const;
 
     std::vector<std::unique_ptr<Condition<dim>>> conditions;
+    /// Whether each condition acts (set_acting()).
+    std::vector<bool> acting;
     /// The name of each condition's Type.
     std::vector<std::string> types;
     /// Per condition, this rank's reactions summed since the last output.

@@ -60,6 +60,15 @@ namespace MpmOtm
           const bool find_material_boundary = false);
 
     /**
+     * Make the coefficients of the functions on the grid sides of
+     * @p fixed_components the Dirichlet lists (replacing those of setup()),
+     * from the next step's constraints on: a stage that switches conditions.
+     */
+    void
+    set_fixed_components(
+      const std::vector<FixedComponents<dim>> &fixed_components);
+
+    /**
      * The partition of the function indices over the ranks.
      */
     const Utilities::MPI::Partitioner &

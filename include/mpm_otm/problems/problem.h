@@ -108,6 +108,13 @@ namespace MpmOtm
     has_gravity() const;
 
     /**
+     * Let the gravitational acceleration be @p g from now on, at once (a
+     * stage's Gravity; the ramp of Gravity/Ramp time ends here).
+     */
+    void
+    set_gravity(const Tensor<1, dim> &g);
+
+    /**
      * Number of bodies (1 unless a problem says otherwise).
      */
     virtual unsigned int

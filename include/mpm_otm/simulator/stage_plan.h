@@ -13,11 +13,15 @@ namespace MpmOtm
   template <int dim>
   class BackgroundGrid;
   template <int dim>
+  class BoundaryConditions;
+  template <int dim>
   class LocalDamping;
   template <int dim>
   class MaterialLibrary;
   template <int dim>
   class MaterialPoints;
+  template <int dim>
+  class NodalSystem;
   template <int dim>
   class Problem;
 
@@ -26,12 +30,12 @@ namespace MpmOtm
    * sequence of named periods, each with its end (an End time, or rest by
    * the quasi-static end) and what changes at its start: bodies removed
    * (an excavation) or added (a fill, seeded in its own initial state),
-   * displacements reset to zero, the local damping, the surface loads that
-   * act. Everything else (grid,
-   * shape functions, method, materials, conditions) is that of the whole
-   * run, so a stage subsection has no entry for it. A run without Stages
-   * is one unnamed stage from t = 0 to Time/End time that ends at rest if
-   * the quasi-static end is on, so the time loop knows only stages.
+   * displacements reset to zero, the local damping, the boundary conditions
+   * and surface loads that act, gravity. Everything else (grid, shape
+   * functions, method, materials, what each condition and load does) is
+   * that of the whole run, so a stage subsection has no entry for it. A run
+   * without Stages is one unnamed stage from t = 0 to Time/End time that ends
+   * at rest if the quasi-static end is on, so the time loop knows only stages.
    *
    * Staged runs keep each point's body in a point variable "body" (its
    * number in Bodies), which tells the points of a removed body.
@@ -63,6 +67,11 @@ namespace MpmOtm
       double damping_coefficient = -1;
       /// Whether each surface load acts from its start; empty: unchanged.
       std::vector<bool> acting_loads;
+      /// Whether each boundary condition acts from its start; empty:
+      /// unchanged.
+      std::vector<bool> acting_conditions;
+      /// The gravitational acceleration from its start; empty: unchanged.
+      std::vector<double> gravity;
     };
 
     /**
@@ -96,6 +105,12 @@ namespace MpmOtm
     stages() const;
 
     /**
+     * Whether some stage sets a gravity other than zero.
+     */
+    bool
+    sets_gravity() const;
+
+    /**
      * The entry that gives the end time of the last stage ("Time/End time",
      * or "Stage <last>/End time"): the one a resumed run may extend.
      */
@@ -123,8 +138,10 @@ namespace MpmOtm
      * Make the changes of stage @p stage at its start: remove the points of
      * its removed bodies, seed its added bodies (of @p problem, in their
      * initial state, a geostatic stress from the weight of the bodies then
-     * present), reset the displacements, set the damping of @p damping and
-     * the surface loads of @p problem that act.
+     * present under the stage's gravity), reset the displacements, set the
+     * damping of @p damping, the surface loads of @p problem that act and
+     * its gravity, and the @p conditions that act (with the Dirichlet lists
+     * of @p system).
      * Collective. Returns a sentence on what changed, for the log.
      */
     std::string
@@ -132,19 +149,34 @@ namespace MpmOtm
           MaterialPoints<dim>        &points,
           Problem<dim>               &problem,
           const MaterialLibrary<dim> &materials,
-          LocalDamping<dim>          &damping) const;
+          LocalDamping<dim>          &damping,
+          BoundaryConditions<dim>    &conditions,
+          NodalSystem<dim>           &system) const;
 
     /**
-     * Set @p damping and the surface loads of @p problem that act as the
-     * stages up to and including @p stage left them: for a run resumed
-     * inside @p stage, or started from the state before it.
+     * Set @p damping, the surface loads of @p problem that act and its
+     * gravity, and the @p conditions that act (with the Dirichlet lists of
+     * @p system) as the stages up to and including @p stage left them: for a
+     * run resumed inside @p stage, or started from the state before it.
      */
     void
-    restore(const unsigned int stage,
-            LocalDamping<dim> &damping,
-            Problem<dim>      &problem) const;
+    restore(const unsigned int       stage,
+            LocalDamping<dim>       &damping,
+            Problem<dim>            &problem,
+            BoundaryConditions<dim> &conditions,
+            NodalSystem<dim>        &system) const;
 
   private:
+    /**
+     * Let the @p conditions act that @p acting says, and make the Dirichlet
+     * lists of @p system those of @p problem and of the acting conditions.
+     */
+    void
+    set_acting_conditions(const std::vector<bool> &acting,
+                          const Problem<dim>      &problem,
+                          BoundaryConditions<dim> &conditions,
+                          NodalSystem<dim>        &system) const;
+
     std::vector<Stage> stage_list;
     bool               named = false;
     /// Whether each body exists at the start.
