@@ -543,9 +543,9 @@ namespace MpmOtm
     if (!stage.gravity.empty())
       {
         problem.set_gravity(gravity_of<dim>(stage));
-        changes << "gravity (" << Utilities::to_string(stage.gravity[0]);
+        changes << "gravity (" << stage.gravity[0];
         for (unsigned int d = 1; d < dim; ++d)
-          changes << ", " << Utilities::to_string(stage.gravity[d]);
+          changes << ", " << stage.gravity[d];
         changes << ") m/s^2; ";
       }
     if (!stage.removed_bodies.empty())
