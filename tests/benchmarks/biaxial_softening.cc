@@ -1,6 +1,7 @@
 // The plane-strain biaxial test of prm/biaxial-softening.prm
-// (biaxial_softening.h) on 0.1 m cells (the prm file's are 0.05 m:
-// biaxial_softening_fine) to a platen displacement of 0.03 m. Asserted:
+// (biaxial_softening.h) on 0.1 m cells (the prm file's are 0.05 m, run by
+// doc/scripts/reproduce_user_problems.sh) to a platen displacement of
+// 0.03 m. Asserted:
 //  - the peak of the platen's load within 2 % of the exact
 //    2 c cos(phi) / (1 - sin(phi)) x 1 m = 69.28 kN/m;
 //  - the load softens: at platen displacements 0.025-0.03 m below 30 % of
