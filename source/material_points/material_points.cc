@@ -1,10 +1,9 @@
 #include <deal.II/base/mpi.h>
-#include <deal.II/grid/grid_tools_cache.h>
 
 #include <mpm_otm/base/collective_error.h>
 #include <mpm_otm/grid/background_grid.h>
+#include <mpm_otm/material_points/cell_locator.h>
 #include <mpm_otm/material_points/material_points.h>
-#include <mpm_otm/material_points/simplex_search.h>
 
 #include <algorithm>
 #include <array>
@@ -70,11 +69,11 @@ namespace MpmOtm
   MaterialPoints<dim>::locate()
   {
     lost_points.clear();
-    // Cells of a Mesh file are not axis-parallel boxes: deal.II's sort,
-    // which is correct on quadrilaterals and hexahedra.
-    if (grid->is_simplex())
-      locate_on_simplices();
-    else if (!grid->is_box() || !locate_in_boxes())
+    // Cells of a Mesh file are not axis-parallel boxes: each point is
+    // searched for from its cell.
+    if (grid->is_simplex() || !grid->is_box())
+      locate_in_cells();
+    else if (!locate_in_boxes())
       particles->sort_particles_into_subdomains_and_cells();
 
     // The first few points of each rank: a body that leaves the grid at
@@ -107,23 +106,27 @@ namespace MpmOtm
 
   template <int dim>
   void
-  MaterialPoints<dim>::locate_on_simplices()
+  MaterialPoints<dim>::locate_in_cells()
   {
     // deal.II 9.4's own sorting uses a quadrilateral inside test and puts
-    // points into wrong triangles, and so does its Cache search with a hint:
-    // points are located with find_simplex() and sent to their new rank
-    // here. A point moves at most into a cell next to its own in one step,
-    // which is an own or a ghost cell; points that moved further are
-    // searched for on every rank.
+    // points into wrong triangles, and so does its Cache search with a hint;
+    // on quadrilaterals and hexahedra it inverts the generic mapping for
+    // every point. Points are located with CellLocator, whose inverse maps
+    // are set up once per cell, and sent to their new rank here; a point
+    // still in its cell starts Newton's method from its reference
+    // coordinates before the move. A point moves at most into a cell next to
+    // its own in one step, which is an own or a ghost cell; points that moved
+    // further are searched for on every rank.
     struct Moved
     {
       Point<dim>                                        location;
       Point<dim>                                        reference;
       types::particle_index                             id;
       typename Triangulation<dim>::active_cell_iterator cell;
-      std::vector<double>                               properties;
     };
     std::vector<Moved> moved;
+    // The properties of the moved points, one after the other.
+    std::vector<double> moved_properties;
     std::vector<typename Particles::ParticleHandler<dim>::particle_iterator>
       to_remove;
     // Points for other ranks, each as its cell, id, location and properties,
@@ -150,18 +153,29 @@ namespace MpmOtm
         buffer.insert(buffer.end(), properties.begin(), properties.end());
       };
 
+    // The points of a cell come one after the other: its map is looked up
+    // once.
+    typename Triangulation<dim>::active_cell_iterator current_cell;
+    const ReferenceMap<dim>                          *map = nullptr;
     for (auto particle = particles->begin(); particle != particles->end();
          ++particle)
       {
-        const auto       cell     = particle->get_surrounding_cell();
-        const Point<dim> location = particle->get_location();
-        auto             found    = find_simplex<dim>(*cache, location, cell);
-        if (found.first == cell)
+        const auto cell = particle->get_surrounding_cell();
+        if (cell != current_cell)
           {
-            particle->set_reference_location(found.second);
+            current_cell = cell;
+            map          = &locator->map(cell);
+          }
+        const Point<dim> location = particle->get_location();
+        const Point<dim> reference =
+          map->reference_point(location, particle->get_reference_location());
+        if (map->contains(reference))
+          {
+            particle->set_reference_location(reference);
             continue;
           }
-        found = owning_simplex<dim>(*cache, location, found.first);
+        const auto found =
+          locator->owning(location, locator->find(location, cell, &reference));
         to_remove.push_back(particle);
         if (found.first.state() != IteratorState::valid)
           pack(particle, unfound);
@@ -169,11 +183,10 @@ namespace MpmOtm
           {
             const auto properties = particle->get_properties();
             moved.push_back(
-              {location,
-               found.second,
-               particle->get_id(),
-               found.first,
-               std::vector<double>(properties.begin(), properties.end())});
+              {location, found.second, particle->get_id(), found.first});
+            moved_properties.insert(moved_properties.end(),
+                                    properties.begin(),
+                                    properties.end());
           }
         else
           {
@@ -195,12 +208,15 @@ namespace MpmOtm
     if (global[0] == 0)
       return;
     particles->remove_particles(to_remove);
-    for (const auto &point : moved)
-      particles->insert_particle(point.location,
-                                 point.reference,
-                                 point.id,
-                                 point.cell,
-                                 ArrayView<const double>(point.properties));
+    const unsigned int n_properties = particles->n_properties_per_particle();
+    for (unsigned int k = 0; k < moved.size(); ++k)
+      particles->insert_particle(
+        moved[k].location,
+        moved[k].reference,
+        moved[k].id,
+        moved[k].cell,
+        ArrayView<const double>(&moved_properties[k * n_properties],
+                                n_properties));
 
     const auto insert =
       [&](const double                                            *packed,
@@ -226,15 +242,14 @@ namespace MpmOtm
               const typename Triangulation<dim>::active_cell_iterator cell(
                 grid->triangulation().create_cell_iterator(CellId(binary)));
               const double *packed = &buffer[k + cell_size];
-              insert(
-                packed,
-                cell,
-                find_simplex<dim>(*cache, location_of(packed), cell).second);
+              insert(packed,
+                     cell,
+                     locator->find(location_of(packed), cell).second);
             }
       }
 
     // Points in no cell of their rank: the rank that owns their cell (by
-    // the rule of owning_simplex(), so that only one takes a point on the
+    // the rule of CellLocator::owning(), so that only one takes a point on the
     // boundary between ranks) takes them; the others have left the grid.
     std::vector<unsigned int> taken;
     if (global[1] > 0)
@@ -244,14 +259,11 @@ namespace MpmOtm
           for (std::size_t k = 0; k < part.size(); k += point_size)
             {
               const Point<dim> location = location_of(&part[k]);
-              const auto       found    = owning_simplex<dim>(
-                *cache,
+              const auto       found    = locator->owning(
                 location,
-                find_simplex<dim>(
-                  *cache,
+                locator->find(
                   location,
-                  typename Triangulation<dim>::active_cell_iterator())
-                  .first);
+                  typename Triangulation<dim>::active_cell_iterator()));
               const bool mine = found.first.state() == IteratorState::valid &&
                                 found.first->is_locally_owned();
               if (mine)

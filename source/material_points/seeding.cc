@@ -3,14 +3,13 @@
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_simplex_p.h>
 #include <deal.II/fe/fe_values.h>
-#include <deal.II/grid/grid_tools_cache.h>
 
 #include <mpm_otm/base/collective_error.h>
 #include <mpm_otm/base/node_memory.h>
 #include <mpm_otm/grid/background_grid.h>
+#include <mpm_otm/material_points/cell_locator.h>
 #include <mpm_otm/material_points/material_points.h>
 #include <mpm_otm/material_points/seeding_bodies.h>
-#include <mpm_otm/material_points/simplex_search.h>
 
 #include <algorithm>
 #include <array>
@@ -139,10 +138,9 @@ namespace MpmOtm
              const typename Triangulation<dim>::active_cell_iterator &) {
         lost_points.emplace_back(particle->get_id(), particle->get_location());
       });
-    if (grid->is_simplex())
-      cache =
-        std::make_unique<GridTools::Cache<dim, dim>>(grid->triangulation(),
-                                                     grid->mapping());
+    if (grid->is_simplex() || !grid->is_box())
+      locator = std::make_unique<CellLocator<dim>>(grid->triangulation(),
+                                                   grid->mapping());
     insert_pattern(bodies);
     if (!grid->is_box())
       return;
@@ -567,10 +565,7 @@ namespace MpmOtm
         typename Triangulation<dim>::active_cell_iterator cell = block_cell;
         if (grid->is_simplex())
           {
-            const auto found =
-              owning_simplex<dim>(*cache,
-                                  X,
-                                  find_simplex<dim>(*cache, X, hint).first);
+            const auto found = locator->owning(X, locator->find(X, hint));
             AssertThrow(found.first.state() == IteratorState::valid,
                         ExcInternalError());
             hint = found.first;

@@ -11,21 +11,14 @@
 #include <string>
 #include <vector>
 
-namespace dealii
-{
-  namespace GridTools
-  {
-    template <int dim, int spacedim>
-    class Cache;
-  }
-} // namespace dealii
-
 namespace MpmOtm
 {
   using namespace dealii;
 
   template <int dim>
   class BackgroundGrid;
+  template <int dim>
+  class CellLocator;
   template <int dim>
   class SeedingBodies;
 
@@ -174,8 +167,15 @@ namespace MpmOtm
       const typename Triangulation<dim>::active_cell_iterator &block_cell,
       const SeedingBodies<dim>                                &bodies);
 
+    /**
+     * Locate on a grid of simplices, or of cells that are not axis-parallel
+     * boxes (a Mesh file): a point still inside its cell only gets its
+     * reference coordinates; the others are searched for from their cell
+     * (find_cell(), owning_cell()) and sent to the rank that owns the cell
+     * they entered. Collective.
+     */
     void
-    locate_on_simplices();
+    locate_in_cells();
 
     /**
      * Stop, on every rank and before any point is created, if the points
@@ -205,7 +205,7 @@ namespace MpmOtm
       owned_cell_of_block;
 
     const BackgroundGrid<dim>                                *grid = nullptr;
-    std::unique_ptr<GridTools::Cache<dim, dim>>               cache;
+    std::unique_ptr<CellLocator<dim>>                         locator;
     std::vector<unsigned int>                                 n_per_direction;
     std::unique_ptr<Particles::ParticleHandler<dim>>          particles;
     std::vector<std::pair<types::particle_index, Point<dim>>> lost_points;
