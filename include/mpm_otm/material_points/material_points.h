@@ -171,8 +171,8 @@ namespace MpmOtm
      * Locate on a grid of simplices, or of cells that are not axis-parallel
      * boxes (a Mesh file): a point still inside its cell only gets its
      * reference coordinates; the others are searched for from their cell
-     * (find_cell(), owning_cell()) and sent to the rank that owns the cell
-     * they entered. Collective.
+     * (CellLocator::find(), CellLocator::owning()) and sent to the rank that
+     * owns the cell they entered. Collective.
      */
     void
     locate_in_cells();

@@ -33,7 +33,7 @@ namespace MpmOtm
     /**
      * The reference coordinates of @p point; for a hypercube Newton's method
      * starts at @p start (the cell's centre if not given; a point's
-     * reference coordinates before it moved take one or two steps). Where
+     * reference coordinates before it moved take two or three steps). Where
      * it has not converged (a point far outside a distorted cell), a point
      * outside the reference cell.
      */
@@ -80,9 +80,10 @@ namespace MpmOtm
     bool affine = false;
     /// The coefficients of the multilinear map, x = sum_S c_S prod_{d in
     /// S} xi_d over the subsets S of the directions (bit d of S for
-    /// direction d); for a simplex c_0 and the edges from vertex 0.
+    /// direction d); for a simplex only c_0, vertex 0.
     std::array<Tensor<1, dim>, (1u << dim)> coefficients;
-    /// The inverse Jacobian of the affine part (at xi = 0).
+    /// The inverse Jacobian of the affine part (at xi = 0; for a simplex
+    /// that of its edges from vertex 0).
     Tensor<2, dim> inverse_jacobian;
     /// A bound of the second derivatives of the map in reference
     /// coordinates, for the error of Newton's method.
