@@ -324,17 +324,27 @@ end"
     biaxial)
       echo "Biaxial test with strain softening: peak, residual, shear band"
       {
-        echo "# cells remedy peak_load late_load(platen displacement 0.045-0.06 m) band_points band_angle slip (kN/m, deg, m; exact peak 69.28, residual 10.91)"
-        for cells in "16 22 0.1 1.95 2.05" "32 44 0.05 1.975 2.025"; do
-          read -r nx ny h box_lower box_upper <<< "$cells"
-          for remedy in F-bar none; do
-            run biaxial-softening.prm "set Volumetric locking remedy = $remedy
+        echo "# cells family regularisation remedy peak_load late_load(platen displacement 0.045-0.06 m) band_points band_angle slip (kN/m, deg, m; exact peak 69.28, residual 10.91)"
+        # family, regularisation, locking remedy; the platen's box reaches
+        # a cell (B-splines: their control points) or half a cell (linear:
+        # the vertices) above and below the specimen's top.
+        for setting in "B-spline nodal-average F-bar" "B-spline none F-bar" \
+                       "linear nodal-average F-bar" "linear none F-bar" "linear none none"; do
+          read -r family regularisation remedy <<< "$setting"
+          for h in 0.1 0.05; do
+            nx=$(awk "BEGIN { print 1.6 / $h }"); ny=$(awk "BEGIN { print 2.2 / $h }")
+            reach=$h
+            [ "$family" = linear ] && reach=$(awk "BEGIN { print 0.5 * $h }")
+            name=$h-$family-$regularisation-$remedy
+            run biaxial-softening.prm "set Shape functions = $family
+set Softening regularisation = ${regularisation/-/ }
+set Volumetric locking remedy = $remedy
 subsection Mesh
  set Subdivisions = $nx, $ny
 end
 subsection Boundary platen
- set Box lower corner = -0.3, $box_lower
- set Box upper corner = 1.3, $box_upper
+ set Box lower corner = -0.3, $(awk "BEGIN { print 2 - $reach }")
+ set Box upper corner = 1.3, $(awk "BEGIN { print 2 + $reach }")
 end
 subsection Time
  set End time = 12
@@ -345,20 +355,20 @@ subsection Output
 end"
             # Platen displacement and load (the mean over each 0.05 s).
             awk -F, 'NR > 1 { printf "%.5f %.1f\n", -$9, -$7 }' run/statistics.csv \
-              > "$data/biaxial-load-$h-$remedy.dat"
+              > "$data/biaxial-load-$name.dat"
             last=$(ls run/particles-*.csv | tail -1)
-            if [ "$h" = 0.05 ] && [ $remedy = F-bar ]; then
+            if [ "$h" = 0.05 ] && [ "$regularisation" = nodal-average ]; then
               awk -F, 'NR > 1 { printf "%.4g %.4g %.3g\n", $2, $3, $17 }' "$last" \
-                > "$data/biaxial-plastic-strain.dat"
+                > "$data/biaxial-plastic-strain-$family.dat"
             fi
-            peak=$(awk '$2 > m { m = $2 } END { printf "%.2f", m / 1e3 }' "$data/biaxial-load-$h-$remedy.dat")
-            late=$(awk '$1 > 0.045 { s += $2; n++ } END { printf "%.2f", s / n / 1e3 }' "$data/biaxial-load-$h-$remedy.dat")
+            peak=$(awk '$2 > m { m = $2 } END { printf "%.2f", m / 1e3 }' "$data/biaxial-load-$name.dat")
+            late=$(awk '$1 > 0.045 { s += $2; n++ } END { printf "%.2f", s / n / 1e3 }' "$data/biaxial-load-$name.dat")
             band=$(awk -F, 'NR > 1 && $17 > 0.05 && $3 > 0.1 && $3 < 1.9 {
                 n++; sx += $2; sy += $3; sxx += $2 * $2; sxy += $2 * $3 }
               NR > 1 && $3 > 1.9 { t += $6; nt++ } NR > 1 && $3 < 0.1 { b += $6; nb++ }
               END { s = (n * sxy - sx * sy) / (n * sxx - sx * sx); d = t / nt - b / nb
                 printf "%d %.1f %.3f", n, atan2(s < 0 ? -s : s, 1) * 45 / atan2(1, 1), d < 0 ? -d : d }' "$last")
-            echo "$h $remedy $peak $late $band"
+            echo "$h $family $regularisation $remedy $peak $late $band"
           done
         done
       } | tee "$data/biaxial-summary.dat"

@@ -164,20 +164,34 @@ set xlabel "platen displacement (m)"
 set ylabel "load (kN/m)"
 set xrange [0:0.06]
 set yrange [0:80]
-set key top right
+set key top right font ",9"
 peak = 2 * 20 * cos(pi / 6) / (1 - sin(pi / 6))
 residual = 2 * 5 * cos(5 * pi / 180) / (1 - sin(5 * pi / 180))
-plot "data/biaxial-load-0.05-F-bar.dat" using 1:($2 / 1e3) with lines lw 2 title "0.05 m cells, F-bar", \
-     "data/biaxial-load-0.1-F-bar.dat" using 1:($2 / 1e3) with lines lw 2 title "0.1 m cells, F-bar", \
-     "data/biaxial-load-0.05-none.dat" using 1:($2 / 1e3) with lines dt 2 title "0.05 m cells, no remedy", \
-     "data/biaxial-load-0.1-none.dat" using 1:($2 / 1e3) with lines dt 2 title "0.1 m cells, no remedy", \
+plot "data/biaxial-load-0.05-B-spline-nodal-average-F-bar.dat" using 1:($2 / 1e3) with lines lw 2 title "B-splines, nodal average, 0.05 m cells", \
+     "data/biaxial-load-0.1-B-spline-nodal-average-F-bar.dat" using 1:($2 / 1e3) with lines lw 2 title "B-splines, nodal average, 0.1 m cells", \
+     "data/biaxial-load-0.05-B-spline-none-F-bar.dat" using 1:($2 / 1e3) with lines dt 2 title "B-splines, local, 0.05 m cells", \
+     "data/biaxial-load-0.05-linear-nodal-average-F-bar.dat" using 1:($2 / 1e3) with lines lw 1 title "linear, nodal average, 0.05 m cells", \
+     "data/biaxial-load-0.05-linear-none-F-bar.dat" using 1:($2 / 1e3) with lines dt 2 title "linear, local, 0.05 m cells", \
+     "data/biaxial-load-0.05-linear-none-none.dat" using 1:($2 / 1e3) with lines dt 4 title "linear, local, no locking remedy", \
+     peak with lines dt 3 lc rgb "black" title "peak 2 c cos(phi) / (1 - sin(phi))", \
+     residual with lines dt 4 lc rgb "gray30" title "residual 2 c_r cos(phi_r) / (1 - sin(phi_r))"
+set output "figures/biaxial-load-late.png"
+set title "Biaxial test: platen load after the peak (mean over 0.05 s)"
+set xrange [0.02:0.06]
+set yrange [8:16]
+plot "data/biaxial-load-0.05-B-spline-nodal-average-F-bar.dat" using 1:($2 / 1e3) with lines lw 2 title "B-splines, nodal average, 0.05 m cells", \
+     "data/biaxial-load-0.1-B-spline-nodal-average-F-bar.dat" using 1:($2 / 1e3) with lines lw 2 title "B-splines, nodal average, 0.1 m cells", \
+     "data/biaxial-load-0.05-B-spline-none-F-bar.dat" using 1:($2 / 1e3) with lines dt 2 title "B-splines, local, 0.05 m cells", \
+     "data/biaxial-load-0.05-linear-nodal-average-F-bar.dat" using 1:($2 / 1e3) with lines lw 1 title "linear, nodal average, 0.05 m cells", \
+     "data/biaxial-load-0.05-linear-none-F-bar.dat" using 1:($2 / 1e3) with lines dt 2 title "linear, local, 0.05 m cells", \
+     "data/biaxial-load-0.05-linear-none-none.dat" using 1:($2 / 1e3) with lines dt 4 title "linear, local, no locking remedy", \
      peak with lines dt 3 lc rgb "black" title "peak 2 c cos(phi) / (1 - sin(phi))", \
      residual with lines dt 4 lc rgb "gray30" title "residual 2 c_r cos(phi_r) / (1 - sin(phi_r))"
 set autoscale
 
 set output "figures/biaxial-shear-band.png"
 set terminal pngcairo size 560,760 font ",11"
-set title "Biaxial test: plastic strain at the end (0.05 m cells),\nat the initial positions"
+set title "Biaxial test: plastic strain at the end (B-splines,\nnodal average, 0.05 m cells), at the initial positions"
 set xlabel "x (m)"
 set ylabel "y (m)"
 set size ratio -1
@@ -186,11 +200,11 @@ set yrange [0:2]
 set cbrange [0:0.5]
 set cblabel "equivalent plastic strain"
 set key bottom right opaque
-stats "< awk '$3 > 0.05 && $2 > 0.1 && $2 < 1.9' data/biaxial-plastic-strain.dat" using 1:2 nooutput
+stats "< awk '$3 > 0.05 && $2 > 0.1 && $2 < 1.9' data/biaxial-plastic-strain-B-spline.dat" using 1:2 nooutput
 xm = STATS_mean_x
 ym = STATS_mean_y
 direction = STATS_slope > 0 ? 1 : -1
-plot "data/biaxial-plastic-strain.dat" using 1:2:3 with points pt 5 ps 0.4 palette notitle, \
+plot "data/biaxial-plastic-strain-B-spline.dat" using 1:2:3 with points pt 5 ps 0.4 palette notitle, \
      ym + direction * tan(45 * pi / 180) * (x - xm) with lines lw 2 dt 2 lc rgb "black" title "Roscoe 45 deg", \
      ym + direction * tan(60 * pi / 180) * (x - xm) with lines lw 2 dt 3 lc rgb "black" title "Coulomb 60 deg"
 unset cblabel

@@ -13,19 +13,21 @@
 namespace MpmOtm
 {
   template <int dim>
-  TimeStepper<dim>::TimeStepper(MaterialPoints<dim>        &material_points,
-                                const ShapeFunctions<dim>  &shape_functions,
-                                NodalSystem<dim>           &system,
-                                MassMatrix<dim>            &mass_matrix,
-                                const NodalUpdate<dim>     &nodal_update,
-                                GridMotion<dim>            &grid_motion,
-                                const MaterialLibrary<dim> &materials,
-                                const Problem<dim>         &problem,
-                                BoundaryConditions<dim>    &boundary_conditions,
-                                const LocalDamping<dim>    &damping,
-                                VolumetricLockingRemedy<dim> *locking_remedy,
-                                const ParticleTransfer<dim>  &particle_transfer,
-                                TimerOutput                  &timer)
+  TimeStepper<dim>::TimeStepper(
+    MaterialPoints<dim>          &material_points,
+    const ShapeFunctions<dim>    &shape_functions,
+    NodalSystem<dim>             &system,
+    MassMatrix<dim>              &mass_matrix,
+    const NodalUpdate<dim>       &nodal_update,
+    GridMotion<dim>              &grid_motion,
+    const MaterialLibrary<dim>   &materials,
+    const Problem<dim>           &problem,
+    BoundaryConditions<dim>      &boundary_conditions,
+    const LocalDamping<dim>      &damping,
+    VolumetricLockingRemedy<dim> *locking_remedy,
+    SofteningRegularisation<dim> *softening_regularisation,
+    const ParticleTransfer<dim>  &particle_transfer,
+    TimerOutput                  &timer)
     : material_points(material_points)
     , shape_functions(shape_functions)
     , system(system)
@@ -37,6 +39,7 @@ namespace MpmOtm
     , boundary_conditions(boundary_conditions)
     , damping(damping)
     , locking_remedy(locking_remedy)
+    , softening_regularisation(softening_regularisation)
     , particle_transfer(particle_transfer)
     , timer(timer)
   {}
@@ -388,6 +391,8 @@ namespace MpmOtm
           }
         locking_remedy->after_stress_update(material_points);
       }
+    if (softening_regularisation)
+      softening_regularisation->update(material_points, data);
 
     std::string problem;
     if (bad_point != numbers::invalid_unsigned_int)

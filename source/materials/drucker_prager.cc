@@ -234,6 +234,15 @@ namespace MpmOtm
 
 
   template <int dim>
+  bool
+  DruckerPrager<dim>::softens() const
+  {
+    return strength.softens();
+  }
+
+
+
+  template <int dim>
   double
   DruckerPrager<dim>::friction_angle() const
   {

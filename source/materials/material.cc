@@ -94,6 +94,15 @@ namespace MpmOtm
 
 
   template <int dim>
+  unsigned int
+  Material<dim>::softening_variable() const
+  {
+    return numbers::invalid_unsigned_int;
+  }
+
+
+
+  template <int dim>
   bool
   Material<dim>::is_plastic() const
   {

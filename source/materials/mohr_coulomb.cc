@@ -531,6 +531,15 @@ namespace MpmOtm
 
 
   template <int dim>
+  bool
+  MohrCoulomb<dim>::softens() const
+  {
+    return strength.softens();
+  }
+
+
+
+  template <int dim>
   double
   MohrCoulomb<dim>::friction_angle() const
   {

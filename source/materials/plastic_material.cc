@@ -51,7 +51,9 @@ namespace MpmOtm
   PlasticMaterial<dim>::internal_variables() const
   {
     std::vector<std::string> names{"plastic_strain"};
-    const auto               others = additional_internal_variables();
+    if (softens())
+      names.push_back("softening_strain");
+    const auto others = additional_internal_variables();
     names.insert(names.end(), others.begin(), others.end());
     if (can_separate())
       names.push_back("separation");
@@ -72,6 +74,24 @@ namespace MpmOtm
   template <int dim>
   bool
   PlasticMaterial<dim>::can_separate() const
+  {
+    return false;
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  PlasticMaterial<dim>::softening_variable() const
+  {
+    return softens() ? 1 : numbers::invalid_unsigned_int;
+  }
+
+
+
+  template <int dim>
+  bool
+  PlasticMaterial<dim>::softens() const
   {
     return false;
   }
@@ -224,12 +244,26 @@ namespace MpmOtm
       }
     SymmetricTensor<2, 3> stress =
       elastic_trial_stress(to_three_dimensions(state), gradient, dt);
-    const double trial_trace    = trace(stress);
+    const double trial_trace = trace(stress);
+    // With softening, the return sees the softening strain (the strength's
+    // variable) in the plastic strain's place; the plastic strain takes the
+    // same increment.
+    const bool   softening      = softens();
     const double plastic_strain = internal[0];
+    const double strength_strain =
+      softening ? internal[softening_variable()] : plastic_strain;
+    internal[0] = strength_strain;
     return_map(stress, internal);
+    if (softening)
+      {
+        const double updated           = internal[0];
+        internal[softening_variable()] = updated;
+        if (strength_strain != plastic_strain)
+          internal[0] = plastic_strain + (updated - strength_strain);
+      }
     // Returned to the apex: the volumetric plastic strain of the return is
     // the separation taken in this step.
-    if (separation != nullptr && is_separated(stress, plastic_strain))
+    if (separation != nullptr && is_separated(stress, strength_strain))
       *separation += (trial_trace - trace(stress)) /
                      (3. * this->lambda_lame + 2. * this->mu_lame);
     for (unsigned int i = 0; i < dim; ++i)

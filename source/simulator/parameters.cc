@@ -5,6 +5,7 @@
 #include <mpm_otm/algorithms/method.h>
 #include <mpm_otm/algorithms/particle_transfer.h>
 #include <mpm_otm/algorithms/quasi_static_end.h>
+#include <mpm_otm/algorithms/softening_regularisation.h>
 #include <mpm_otm/algorithms/volumetric_locking_remedy.h>
 #include <mpm_otm/base/plugins.h>
 #include <mpm_otm/boundary_conditions/boundary_conditions.h>
@@ -165,6 +166,19 @@ namespace MpmOtm
         "Mohr-Coulomb), none otherwise and for linear functions on "
         "triangles/tetrahedra (manual, 'Volumetric locking').");
     prm.declare_entry(
+      "Softening regularisation",
+      "automatic",
+      Patterns::Selection("automatic|none|nodal average"),
+      "How the strength of a softening material (Mohr-Coulomb or "
+      "Drucker-Prager with Softening strains) follows its plastic strain. "
+      "none: each point softens with its own equivalent plastic strain (a "
+      "shear band is as narrow as the grid lets it be, and its result "
+      "depends on the cell size). nodal average: with the average of the "
+      "equivalent plastic strain over the support of the point's shape "
+      "functions, projected to the nodes and back each step, so that all "
+      "points of a band's cells soften together. automatic: nodal average "
+      "if a material softens, none otherwise (manual, 'Materials').");
+    prm.declare_entry(
       "Deactivation threshold",
       "0",
       Patterns::Double(0.),
@@ -297,6 +311,26 @@ namespace MpmOtm
             PluginRegistry<VolumetricLockingRemedy<dim>>::create(remedy);
           locking_remedy->parse_parameters(prm);
         }
+    }
+
+    {
+      std::string regularisation = prm.get("Softening regularisation");
+      bool        softening      = false;
+      for (unsigned int id = 0; id < materials->n_materials(); ++id)
+        softening = softening || ((*materials)[id].softening_variable() !=
+                                  numbers::invalid_unsigned_int);
+      AssertThrow(softening || regularisation != "nodal average",
+                  ExcMessage(
+                    "Softening regularisation = nodal average: no material "
+                    "softens. It regularises the strain softening of "
+                    "Mohr-Coulomb and Drucker-Prager (their entry Softening "
+                    "strains); give them, or use Softening regularisation = "
+                    "none or automatic."));
+      if (regularisation == "automatic")
+        regularisation = softening ? "nodal average" : "none";
+      if (regularisation == "nodal average")
+        softening_regularisation =
+          std::make_unique<SofteningRegularisation<dim>>();
     }
 
     prm.enter_subsection("Time");

@@ -6,6 +6,7 @@
 
 #include <mpm_otm/algorithms/grid_motion.h>
 #include <mpm_otm/algorithms/particle_transfer.h>
+#include <mpm_otm/algorithms/softening_regularisation.h>
 #include <mpm_otm/algorithms/stable_time_step.h>
 #include <mpm_otm/algorithms/volumetric_locking_remedy.h>
 #include <mpm_otm/base/activity.h>
@@ -146,6 +147,8 @@ namespace MpmOtm
       }
     if (locking_remedy)
       locking_remedy->initialize(*shape_functions, *system, *materials);
+    if (softening_regularisation)
+      softening_regularisation->initialize(*materials, *system);
     particle_transfer->initialize(*shape_functions, system->partitioner());
     // The material that sets the time step, for the messages below: a
     // wrong modulus or density shows up first as an absurd time step.
@@ -339,6 +342,8 @@ namespace MpmOtm
           << std::defaultfloat << std::endl;
     if (locking_remedy)
       pcout << locking_remedy->description() << std::endl;
+    if (softening_regularisation)
+      pcout << softening_regularisation->description() << std::endl;
     if (particle_transfer->flip_fraction() < 1.)
       pcout << particle_transfer->description() << std::endl;
     pcout << monitored;

@@ -8,6 +8,7 @@
 #include <mpm_otm/algorithms/nodal_update.h>
 #include <mpm_otm/algorithms/particle_transfer.h>
 #include <mpm_otm/algorithms/quasi_static_end.h>
+#include <mpm_otm/algorithms/softening_regularisation.h>
 #include <mpm_otm/algorithms/stable_time_step.h>
 #include <mpm_otm/algorithms/time_stepper.h>
 #include <mpm_otm/algorithms/volumetric_locking_remedy.h>
@@ -78,6 +79,7 @@ namespace MpmOtm
                                *boundary_conditions,
                                *damping,
                                locking_remedy.get(),
+                               softening_regularisation.get(),
                                *particle_transfer,
                                timer);
 

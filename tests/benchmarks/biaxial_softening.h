@@ -55,27 +55,33 @@ namespace Biaxial
 
   /**
    * Run the specimen on @p nx x @p ny cells of the prm file's grid (1.6 m x
-   * 2.2 m) to the
-   * time @p end; the late load is the mean at platen displacements above
-   * @p window_start. The band is made of the points whose plastic strain
-   * has passed the end of softening, between 0.1 m above the base and
-   * 0.1 m below the platen, its angle that of their least-squares line
-   * (initial positions).
+   * 2.2 m) to the time @p end, with the entries @p settings (shape
+   * functions, regularisation) and the platen's box reaching
+   * @p platen_cells cells above and below the specimen's top; the late load
+   * is the mean at platen displacements above @p window_start. The band is made
+   * of the points whose plastic strain has passed the end of softening, between
+   * 0.1 m above the base and 0.1 m below the platen, its angle that of their
+   * least-squares line (initial positions).
    */
   inline Result
   run(const unsigned int nx,
       const unsigned int ny,
       const double       end,
-      const double       window_start)
+      const double       window_start,
+      const std::string &settings,
+      const double       platen_cells)
   {
-    // The platen: the vertices within half a cell of the specimen's top
-    // (the grid reaches 0.2 m above it).
+    // The platen: the functions whose nodes (or control points) lie within
+    // platen_cells cells of the specimen's top (the grid reaches 0.2 m
+    // above it).
     const double       h = 2.2 / ny;
     std::ostringstream changes;
-    changes << "subsection Mesh\n set Subdivisions = " << nx << ", " << ny
+    changes << settings << "\nsubsection Mesh\n set Subdivisions = " << nx
+            << ", " << ny
             << "\nend\nsubsection Boundary platen\n set Box lower corner = "
-            << "-0.3, " << 2. - 0.5 * h << "\n set Box upper corner = 1.3, "
-            << 2. + 0.5 * h << "\nend\nsubsection Time\n set End time = " << end
+            << "-0.3, " << 2. - platen_cells * h
+            << "\n set Box upper corner = 1.3, " << 2. + platen_cells * h
+            << "\nend\nsubsection Time\n set End time = " << end
             << "\nend\nsubsection Output\n set Time interval = 0.05\nend\n";
     auto         simulator = make_simulator<2>("biaxial-softening.prm",
                                        changes.str(),

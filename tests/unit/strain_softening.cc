@@ -155,4 +155,48 @@ main(int argc, char **argv)
             << rounded(-on_peak[2], 6)
             << ": elastic at eps = 0, returned at eps = 0.05" << std::endl;
   }
+
+  // In a time step (update_stress) the strength is that of the softening
+  // strain, the internal variable a SofteningRegularisation replaces by a
+  // nodal average; the plastic strain takes the same increment. The same
+  // uniaxial stress on the peak surface, no deformation in the step: with
+  // plastic strain 0.05 and softening strain 0 it stays (the peak
+  // strength); with plastic strain 0 and softening strain 0.05 it returns
+  // to the residual surface, and both strains grow by the same amount.
+  {
+    check(mc->internal_variables() ==
+              std::vector<std::string>{"plastic_strain",
+                                       "softening_strain",
+                                       "separation"} &&
+            mc->softening_variable() == 1,
+          "Mohr-Coulomb with softening: internal variables");
+    const auto step = [&](const double plastic, const double softening) {
+      std::vector<double> variables{plastic, softening, 0.};
+      StressState<3>      state;
+      state.stress[2][2] =
+        -2. * 20. * std::cos(M_PI / 6.) / (1. - std::sin(M_PI / 6.));
+      state.internal_variables = make_array_view(variables);
+      mc->update_stress(unit_symmetric_tensor<3>(), Tensor<2, 3>(), 1., state);
+      return std::make_pair(state.stress, variables);
+    };
+    const auto [peak_stress, local] = step(0.05, 0.);
+    check(std::abs(peak_stress[2][2] + 69.282032302755) < 1e-9 &&
+            local[0] == 0.05 && local[1] == 0.,
+          "the plastic strain alone softened the strength");
+    const auto [residual_stress, averaged] = step(0., 0.05);
+    const auto residual_model =
+      make_model<MohrCoulomb<3>>("Mohr-Coulomb", interpolated(0.05));
+    check(residual_model->yield_function(eigenvalues(residual_stress)) <
+              1e-12 * scale &&
+            residual_model->yield_function(eigenvalues(residual_stress)) >
+              -1e-9 * scale &&
+            averaged[0] > 0. &&
+            std::abs(averaged[0] - (averaged[1] - 0.05)) < 1e-15,
+          "the softening strain did not set the strength");
+    deallog << "in a time step the softening strain sets the strength: "
+               "plastic strain 0.05, softening strain 0 elastic; plastic "
+               "strain 0, softening strain 0.05 returned to the residual "
+               "surface, both grown by "
+            << rounded(averaged[0], 3) << std::endl;
+  }
 }

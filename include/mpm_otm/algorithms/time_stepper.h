@@ -6,6 +6,7 @@
 #include <mpm_otm/algorithms/grid_motion.h>
 #include <mpm_otm/algorithms/nodal_update.h>
 #include <mpm_otm/algorithms/particle_transfer.h>
+#include <mpm_otm/algorithms/softening_regularisation.h>
 #include <mpm_otm/algorithms/update_stress_last.h>
 #include <mpm_otm/algorithms/volumetric_locking_remedy.h>
 #include <mpm_otm/base/checkpoint_state.h>
@@ -67,6 +68,7 @@ namespace MpmOtm
                 BoundaryConditions<dim>      &boundary_conditions,
                 const LocalDamping<dim>      &damping,
                 VolumetricLockingRemedy<dim> *locking_remedy,
+                SofteningRegularisation<dim> *softening_regularisation,
                 const ParticleTransfer<dim>  &particle_transfer,
                 TimerOutput                  &timer);
 
@@ -148,6 +150,8 @@ namespace MpmOtm
     const LocalDamping<dim>    &damping;
     /// Null without a remedy.
     VolumetricLockingRemedy<dim> *locking_remedy;
+    /// Null without a regularisation of softening.
+    SofteningRegularisation<dim> *softening_regularisation;
     const ParticleTransfer<dim>  &particle_transfer;
     TimerOutput                  &timer;
     /// The grid's own nodal velocities M^-1 q + dt a, whose interpolation

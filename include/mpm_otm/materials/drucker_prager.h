@@ -96,6 +96,12 @@ namespace MpmOtm
     void
     reduce_strength(const double factor) override;
 
+    /**
+     * Whether Softening strains are given.
+     */
+    bool
+    softens() const override;
+
     void
     return_map(SymmetricTensor<2, 3>   &stress,
                const ArrayView<double> &internal_variables) const override;

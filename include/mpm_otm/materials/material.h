@@ -112,6 +112,17 @@ namespace MpmOtm
       const ArrayView<const double> &internal_variables) const;
 
     /**
+     * The index among internal_variables() of the strain the model's
+     * strength softens with, or numbers::invalid_unsigned_int if it does not
+     * soften (the default). The model updates it with its own plastic strain
+     * increments; a SofteningRegularisation may replace it between steps by
+     * an average of the equivalent plastic strain over the point's
+     * neighbourhood.
+     */
+    virtual unsigned int
+    softening_variable() const;
+
+    /**
      * Whether the model flows plastically (false for the elastic models).
      * Isochoric plastic flow locks with linear functions and several points
      * per cell, so the default volumetric locking remedy depends on it.

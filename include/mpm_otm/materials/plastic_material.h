@@ -101,8 +101,26 @@ namespace MpmOtm
                const ArrayView<double> &internal_variables) const = 0;
 
     /**
+     * 1 if the strength softens (the internal variable "softening_strain"
+     * follows the equivalent plastic strain), invalid otherwise.
+     */
+    unsigned int
+    softening_variable() const override;
+
+    /**
+     * Whether the model's strength softens with the equivalent plastic
+     * strain (false by default). If it does, its internal variables are
+     * "plastic_strain", "softening_strain", the others: return_map() sees
+     * the softening strain in place of the plastic strain, so that its
+     * strength is that of the softening strain, and both grow by the
+     * return's increment.
+     */
+    virtual bool
+    softens() const;
+
+    /**
      * Names of the model's internal variables after the equivalent plastic
-     * strain (none by default).
+     * strain (and the softening strain; none by default).
      */
     virtual std::vector<std::string>
     additional_internal_variables() const;

@@ -55,6 +55,8 @@ namespace MpmOtm
   template <int dim>
   class VolumetricLockingRemedy;
   template <int dim>
+  class SofteningRegularisation;
+  template <int dim>
   class QuasiStaticEnd;
   template <int dim>
   class StagePlan;
@@ -317,6 +319,8 @@ namespace MpmOtm
     bool automatic_locking_remedy = false;
     /// Null for Volumetric locking remedy = none.
     std::unique_ptr<VolumetricLockingRemedy<dim>> locking_remedy;
+    /// Null for Softening regularisation = none.
+    std::unique_ptr<SofteningRegularisation<dim>> softening_regularisation;
     /// The step after which the checkpoint resumed from was written (0: a
     /// new run).
     unsigned int resumed_step = 0;
