@@ -9,8 +9,8 @@
 //  - the load softens: at platen displacements 0.025-0.03 m below 30 % of
 //    the peak, and above the residual strength 10.91 kN/m, the least load
 //    that slides a block along a band (on these cells the band is two
-//    cells, a fifth of the specimen, wide, and the load stays 20-25 %
-//    above it: doc/benchmarks.md);
+//    cells, a fifth of the specimen, wide, and the load stays 17 %
+//    above it at 0.025-0.03 m: doc/benchmarks.md);
 //  - the points past the end of softening form a band across the
 //    specimen; its angle to the horizontal is printed beside Roscoe's
 //    45 + psi / 2 = 45 deg and Coulomb's 45 + phi / 2 = 60 deg
