@@ -56,53 +56,55 @@ namespace MpmOtm
     weight.zero_out_ghost_values();
     double *const strain_sums = weighted_strain.get_values();
     double *const weight_sums = weight.get_values();
-    {
+    // Both passes visit the points of the softening materials with their
+    // functions, their property arrays and the offsets of their strains.
+    const auto for_each_softening_point = [&](const auto &action) {
       typename ParticleShapeData<dim>::Cursor functions(shape_data);
-      for (const auto &particle : material_points.particle_handler())
+      for (auto &particle : material_points.particle_handler())
         {
           const auto point      = functions.next();
           const auto properties = particle.get_properties();
-          const auto [plastic, softening] =
-            offsets[Layout::get_material_id(properties)];
-          if (softening == numbers::invalid_unsigned_int)
-            continue;
-          const double volume = properties[Layout::initial_volume];
-          const double strain = properties[plastic];
-          for (unsigned int j = 0; j < point.n; ++j)
-            {
-              const double w = volume * point.values[j];
-              strain_sums[point.indices[j]] += w * strain;
-              weight_sums[point.indices[j]] += w;
-            }
+          const auto offset     = offsets[Layout::get_material_id(properties)];
+          if (offset.second != numbers::invalid_unsigned_int)
+            action(point, properties, offset.first, offset.second);
         }
-    }
+    };
+
+    for_each_softening_point([&](const auto        &point,
+                                 const auto        &properties,
+                                 const unsigned int plastic,
+                                 const unsigned int) {
+      const double volume = properties[Layout::initial_volume];
+      const double strain = properties[plastic];
+      for (unsigned int j = 0; j < point.n; ++j)
+        {
+          const double w = volume * point.values[j];
+          strain_sums[point.indices[j]] += w * strain;
+          weight_sums[point.indices[j]] += w;
+        }
+    });
     weighted_strain.compress(VectorOperation::add);
     weight.compress(VectorOperation::add);
     weighted_strain.update_ghost_values();
     weight.update_ghost_values();
 
-    typename ParticleShapeData<dim>::Cursor functions(shape_data);
-    for (auto &particle : material_points.particle_handler())
-      {
-        const auto point      = functions.next();
-        const auto properties = particle.get_properties();
-        const auto [plastic, softening] =
-          offsets[Layout::get_material_id(properties)];
-        if (softening == numbers::invalid_unsigned_int)
-          continue;
-        double sum = 0., total = 0.;
-        for (unsigned int j = 0; j < point.n; ++j)
-          {
-            const unsigned int i = point.indices[j];
-            if (weight_sums[i] > 0.)
-              {
-                sum += point.values[j] * strain_sums[i] / weight_sums[i];
-                total += point.values[j];
-              }
-          }
-        if (total > 0.)
-          properties[softening] = sum / total;
-      }
+    for_each_softening_point([&](const auto &point,
+                                 const auto &properties,
+                                 const unsigned int,
+                                 const unsigned int softening) {
+      double sum = 0., total = 0.;
+      for (unsigned int j = 0; j < point.n; ++j)
+        {
+          const unsigned int i = point.indices[j];
+          if (weight_sums[i] > 0.)
+            {
+              sum += point.values[j] * strain_sums[i] / weight_sums[i];
+              total += point.values[j];
+            }
+        }
+      if (total > 0.)
+        properties[softening] = sum / total;
+    });
   }
 
 

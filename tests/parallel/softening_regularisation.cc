@@ -10,23 +10,16 @@
 // 2 c cos(phi) / (1 - sin(phi)) x 1 m = 69.28 kN/m, and the end load below
 // 30 % of it and above the residual strength 10.91 kN/m.
 
-#include <cmath>
+#include "../benchmarks/biaxial_softening.h"
 
-#include "../tests.h"
-
-using namespace MpmOtm;
-using namespace MpmOtmTests;
+using namespace Biaxial;
 
 int
 main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   initlog();
-  const double phi = numbers::PI / 6., c = 20e3;
-  const double phi_r = 5. * numbers::PI / 180., c_r = 5e3;
-  const double peak     = 2. * c * std::cos(phi) / (1. - std::sin(phi));
-  const double residual = 2. * c_r * std::cos(phi_r) / (1. - std::sin(phi_r));
-  auto         simulator =
+  auto simulator =
     make_simulator<2>("biaxial-softening.prm",
                       "set Softening regularisation = nodal average\n"
                       "subsection Mesh\n set Subdivisions = 16, 22\nend\n"
